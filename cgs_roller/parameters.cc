@@ -1,0 +1,215 @@
+#include "parameters.h"
+
+#include <sstream>
+
+namespace CgsRoller
+{
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Roller radius",
+                        "50",
+                        Patterns::Double(0.),
+                        "Radius of the cylinder. Units: mm.");
+      prm.declare_entry("Block half width",
+                        "100",
+                        Patterns::Double(0.),
+                        "Width of the modelled half of the block, from the "
+                        "symmetry line. Must exceed the roller radius. "
+                        "Units: mm.");
+      prm.declare_entry("Block height",
+                        "200",
+                        Patterns::Double(0.),
+                        "Height of the block. Units: mm.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      roller_radius    = prm.get_double("Roller radius");
+      block_half_width = prm.get_double("Block half width");
+      block_height     = prm.get_double("Block height");
+    }
+    prm.leave_subsection();
+    AssertThrow(roller_radius > 0. && block_height > 0.,
+                ExcMessage("Geometry: radius and height must be positive."));
+    AssertThrow(block_half_width > roller_radius,
+                ExcMessage("Geometry: 'Block half width' must exceed the "
+                           "roller radius."));
+  }
+
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Element degree",
+                        "2",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the FE_Q displacement element "
+                        "and of the geometry mapping (1: Q1, 2: Q2).");
+      prm.declare_entry("Number of global refinements",
+                        "0",
+                        Patterns::Integer(0, 6),
+                        "Uniform refinements of the coarse mesh (cells of "
+                        "about half the roller radius).");
+      prm.declare_entry("Number of contact refinements",
+                        "6",
+                        Patterns::Integer(0, 14),
+                        "Graded refinements toward the contact strip; each "
+                        "halves the cell size there.");
+      prm.declare_entry("Contact zone length",
+                        "8",
+                        Patterns::Double(0.),
+                        "Length of the block surface strip, from the "
+                        "symmetry line, refined most. Should exceed the "
+                        "contact half-width. Units: mm.");
+      prm.declare_entry("Grading factor",
+                        "2.0",
+                        Patterns::Double(0.5),
+                        "A cell is refined if its centre lies closer to the "
+                        "strip than this many cell diameters. "
+                        "Dimensionless.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      element_degree        = prm.get_integer("Element degree");
+      n_global_refinements  = prm.get_integer("Number of global refinements");
+      n_contact_refinements = prm.get_integer("Number of contact refinements");
+      contact_zone_length   = prm.get_double("Contact zone length");
+      grading_factor        = prm.get_double("Grading factor");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    {
+      prm.declare_entry("Force per unit thickness",
+                        "35000",
+                        Patterns::Double(0.),
+                        "Vertical point force on the top of the roller, per "
+                        "unit thickness of the full model; the half model "
+                        "carries half of it. Units: N/mm.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    {
+      force_per_thickness = prm.get_double("Force per unit thickness");
+    }
+    prm.leave_subsection();
+    AssertThrow(force_per_thickness > 0.,
+                ExcMessage("Loading: 'Force per unit thickness' must be "
+                           "positive."));
+  }
+
+
+
+  void
+  RunControlParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run control");
+    {
+      prm.declare_entry("Dry run",
+                        "false",
+                        Patterns::Bool(),
+                        "Stop after building the mesh, the DoFs and the "
+                        "contact pairing; print their sizes.");
+      prm.declare_entry("Measure contact cost",
+                        "false",
+                        Patterns::Bool(),
+                        "After the last step, time one assembly and linear "
+                        "solve with the converged active set held fixed, and "
+                        "report the ratio of the contact solve's time to it "
+                        "(summary.json and console).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  RunControlParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Run control");
+    {
+      dry_run              = prm.get_bool("Dry run");
+      measure_contact_cost = prm.get_bool("Measure contact cost");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+    LoadingParameters::declare_parameters(prm);
+    Common::Materials::LinearElasticParameters::declare_parameters(
+      prm, "Roller material");
+    Common::Materials::LinearElasticParameters::declare_parameters(
+      prm, "Block material");
+    Common::Contact::ContactParameters::declare_parameters(prm);
+    Common::Solvers::NonlinearSolverParameters::declare_parameters(prm);
+    Common::Solvers::LinearSolverParameters::declare_parameters(prm);
+    Common::Solvers::LoadSteppingParameters::declare_parameters(prm);
+    Common::IO::OutputParameters::declare_parameters(prm);
+    RunControlParameters::declare_parameters(prm);
+  }
+
+
+
+  Parameters::Parameters(const std::string &filename)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input(filename);
+
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    loading.parse_parameters(prm);
+    roller_material.parse_parameters(prm, "Roller material");
+    block_material.parse_parameters(prm, "Block material");
+    contact.parse_parameters(prm);
+    nonlinear_solver.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    load_stepping.parse_parameters(prm);
+    output.parse_parameters(prm);
+    run_control.parse_parameters(prm);
+
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::ShortPRM);
+    used_parameters = text.str();
+  }
+} // namespace CgsRoller

@@ -1,0 +1,113 @@
+/*
+ * Parameters of the cgs_roller benchmark: the common blocks (materials,
+ * contact, solvers, output) composed with the blocks that only this
+ * benchmark has (geometry, mesh, loading, run control).
+ */
+#ifndef cgs_roller_parameters_h
+#define cgs_roller_parameters_h
+
+#include <common/contact/contact_parameters.h>
+#include <common/io/output_parameters.h>
+#include <common/materials/linear_elastic.h>
+#include <common/solvers/linear_solver.h>
+#include <common/solvers/load_stepping.h>
+#include <common/solvers/newton_solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace CgsRoller
+{
+  using namespace dealii;
+
+  /** Subsection "Geometry". */
+  struct GeometryParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Roller radius (mm). */
+    double roller_radius;
+    /** Width of the half block modelled, from the symmetry line (mm). */
+    double block_half_width;
+    /** Block height (mm). */
+    double block_height;
+  };
+
+  /** Subsection "Mesh". */
+  struct MeshParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    unsigned int element_degree;
+    unsigned int n_global_refinements;
+    unsigned int n_contact_refinements;
+    /** Length of the surface strip from the symmetry line that is refined
+     * most (mm). */
+    double contact_zone_length;
+    /** Refine a cell if its centre is closer to the strip than this many
+     * cell diameters. */
+    double grading_factor;
+  };
+
+  /** Subsection "Loading". */
+  struct LoadingParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Total vertical force per unit thickness of the full model (N/mm);
+     * the half model carries half of it. */
+    double force_per_thickness;
+  };
+
+  /** Subsection "Run control". */
+  struct RunControlParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool dry_run;
+    bool measure_contact_cost;
+  };
+
+  /**
+   * All parameters of a cgs_roller run, read from one .prm file.
+   */
+  struct Parameters
+  {
+    /** Declare, parse and check every entry of @p filename. */
+    explicit Parameters(const std::string &filename);
+
+    /** Declare every entry (also used by --print-parameters). */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    GeometryParameters                       geometry;
+    MeshParameters                           mesh;
+    LoadingParameters                        loading;
+    Common::Materials::LinearElasticParameters roller_material;
+    Common::Materials::LinearElasticParameters block_material;
+    Common::Contact::ContactParameters         contact;
+    Common::Solvers::NonlinearSolverParameters nonlinear_solver;
+    Common::Solvers::LinearSolverParameters    linear_solver;
+    Common::Solvers::LoadSteppingParameters    load_stepping;
+    Common::IO::OutputParameters               output;
+    RunControlParameters                       run_control;
+
+    /** The parameters as read, for used_parameters.prm. */
+    std::string used_parameters;
+  };
+} // namespace CgsRoller
+
+#endif

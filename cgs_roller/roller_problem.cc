@@ -1,0 +1,726 @@
+/*
+ * Benchmark 1 of the FENET/NAFEMS advanced contact benchmarks: an elastic
+ * cylinder (steel, diameter 100 mm) pressed onto an elastic block
+ * (aluminium, 200 x 200 mm) by a point force on its top, plane strain.
+ * Half model about the vertical symmetry line. The contact pressure is
+ * compared with the Hertz line-contact solution; see README.md.
+ */
+#include "roller_problem.h"
+
+#include <common/contact/contact_postprocessor.h>
+#include <common/geometry/two_body_meshes.h>
+#include <common/io/plotting.h>
+#include <common/io/solution_output.h>
+#include <common/solvers/linear_solver.h>
+
+#include <deal.II/base/function.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <chrono>
+#include <fstream>
+
+namespace CgsRoller
+{
+  namespace
+  {
+    double
+    seconds_since(const std::chrono::steady_clock::time_point &start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+        .count();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  RollerProblem<dim>::RollerProblem(const Parameters &parameters)
+    : parameters(parameters)
+    , mpi_communicator(MPI_COMM_WORLD)
+    , console(parameters.output.verbosity, mpi_communicator)
+    , triangulation(mpi_communicator)
+    , fe(FE_Q<dim>(parameters.mesh.element_degree), dim)
+    , mapping(parameters.mesh.element_degree)
+    , dof_handler(triangulation)
+    , load_dof(numbers::invalid_dof_index)
+    , linear_solver(parameters.linear_solver)
+    , contact_setup_time(0.)
+    , contact_solve_time(0.)
+    , assembly_time(0.)
+    , linear_solve_time(0.)
+    , residual_time(0.)
+    , active_set_time(0.)
+  {}
+
+
+
+  // The half model: the block occupies [0, W] x [0, H]; the roller is the
+  // half disc x >= 0 of radius R centred at (0, H + R), touching the block
+  // at the origin of the contact zone (0, H). The two bodies are joined
+  // into one triangulation without merging the touching vertices. The
+  // roller's boundary follows a spherical manifold and its interior a
+  // transfinite interpolation, so refinement toward the contact point
+  // keeps the cells well shaped.
+  template <int dim>
+  void
+  RollerProblem<dim>::make_grid()
+  {
+    const double R = parameters.geometry.roller_radius;
+    const double W = parameters.geometry.block_half_width;
+    const double H = parameters.geometry.block_height;
+    const Point<dim> centre(0., H + R);
+
+    Triangulation<dim> block;
+    const double       coarse_size = R / 2.;
+    GridGenerator::subdivided_hyper_rectangle(
+      block,
+      {std::max(1u, static_cast<unsigned int>(std::round(W / coarse_size))),
+       std::max(1u, static_cast<unsigned int>(std::round(H / coarse_size)))},
+      Point<dim>(0., 0.),
+      Point<dim>(W, H));
+
+    Triangulation<dim> roller;
+    GridGenerator::half_hyper_ball(roller, Point<dim>(), R);
+    // Keep the half x >= 0.
+    bool left_half = false;
+    for (const auto &v : roller.get_vertices())
+      left_half = left_half || v[0] < -1e-10 * R;
+    if (left_half)
+      GridTools::rotate(numbers::PI, roller);
+    GridTools::shift(centre, roller);
+
+    for (const auto &cell : block.active_cell_iterators())
+      cell->set_material_id(MaterialIds::block);
+    for (const auto &cell : roller.active_cell_iterators())
+      cell->set_material_id(MaterialIds::roller);
+
+    Common::Geometry::join_bodies<dim>({&block, &roller}, triangulation);
+
+    const double tolerance = 1e-8 * R;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        if (cell->material_id() == MaterialIds::roller)
+          cell->set_all_manifold_ids(1);
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<dim> c = cell->face(f)->center();
+              if (cell->material_id() == MaterialIds::block)
+                cell->face(f)->set_boundary_id(
+                  std::abs(c[1]) < tolerance     ? BoundaryIds::block_bottom :
+                  std::abs(c[1] - H) < tolerance ? BoundaryIds::block_top :
+                  std::abs(c[0]) < tolerance ? BoundaryIds::block_symmetry :
+                                               BoundaryIds::block_side);
+              else if (std::abs(c[0]) < tolerance)
+                cell->face(f)->set_boundary_id(BoundaryIds::roller_symmetry);
+              else
+                {
+                  cell->face(f)->set_boundary_id(BoundaryIds::roller_surface);
+                  cell->face(f)->set_manifold_id(0);
+                }
+            }
+      }
+    triangulation.set_manifold(0, SphericalManifold<dim>(centre));
+    TransfiniteInterpolationManifold<dim> transfinite;
+    transfinite.initialize(triangulation);
+    triangulation.set_manifold(1, transfinite);
+
+    triangulation.refine_global(parameters.mesh.n_global_refinements);
+    const double L        = parameters.mesh.contact_zone_length;
+    const auto   distance = [H, L](const Point<dim> &p) {
+      const double dx = std::max(0., p[0] - L);
+      return std::sqrt(dx * dx + (p[1] - H) * (p[1] - H));
+    };
+    Common::Geometry::refine_toward<dim>(triangulation,
+                                         distance,
+                                         parameters.mesh.n_contact_refinements,
+                                         parameters.mesh.grading_factor);
+  }
+
+
+
+  template <int dim>
+  void
+  RollerProblem<dim>::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+    locally_owned_dofs    = dof_handler.locally_owned_dofs();
+    locally_relevant_dofs = complete_index_set(dof_handler.n_dofs());
+
+    // Hanging nodes of the graded mesh, and homogeneous Dirichlet
+    // conditions on the Newton increment: fixed block bottom, u_x = 0 on
+    // both symmetry lines.
+    constraints_dirichlet_and_hanging_nodes.clear();
+    constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(
+      dof_handler, constraints_dirichlet_and_hanging_nodes);
+    const FEValuesExtractors::Scalar x_displacement(0);
+    VectorTools::interpolate_boundary_values(mapping,
+                                             dof_handler,
+                                             BoundaryIds::block_bottom,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             constraints_dirichlet_and_hanging_nodes);
+    for (const auto id :
+         {BoundaryIds::block_symmetry, BoundaryIds::roller_symmetry})
+      VectorTools::interpolate_boundary_values(
+        mapping,
+        dof_handler,
+        id,
+        Functions::ZeroFunction<dim>(dim),
+        constraints_dirichlet_and_hanging_nodes,
+        fe.component_mask(x_displacement));
+    constraints_dirichlet_and_hanging_nodes.close();
+
+    // The point load acts on the vertical DoF of the roller's top vertex.
+    const Point<dim> top(0., parameters.geometry.block_height +
+                               2. * parameters.geometry.roller_radius);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (cell->vertex(v).distance(top) <
+            1e-8 * parameters.geometry.roller_radius)
+          load_dof = cell->vertex_dof_index(v, 1);
+    AssertThrow(load_dof != numbers::invalid_dof_index,
+                ExcMessage("No mesh vertex at the top of the roller."));
+
+    std::map<types::material_id, Common::Materials::LinearElastic<dim>>
+      materials;
+    materials.emplace(MaterialIds::roller,
+                      Common::Materials::LinearElastic<dim>(
+                        parameters.roller_material));
+    materials.emplace(MaterialIds::block,
+                      Common::Materials::LinearElastic<dim>(
+                        parameters.block_material));
+    physics = std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+      mapping, fe, materials);
+
+    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    solution_owned.reinit(locally_owned_dofs, mpi_communicator);
+    accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(locally_owned_dofs, mpi_communicator);
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    bulk_residual.reinit(locally_owned_dofs,
+                         locally_relevant_dofs,
+                         mpi_communicator);
+  }
+
+
+
+  // Small strain: the contact geometry is evaluated once, in the reference
+  // configuration. The block's top is the secondary surface (multipliers,
+  // reported pressures), the roller's surface the primary one.
+  template <int dim>
+  void
+  RollerProblem<dim>::setup_contact()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    secondary = std::make_unique<Common::Contact::ContactSurface<dim>>(
+      dof_handler, mapping, parameters.contact.secondary_boundary_id);
+    primary = std::make_unique<Common::Contact::ContactSurface<dim>>(
+      dof_handler, mapping, parameters.contact.primary_boundary_id);
+    search = std::make_unique<Common::Contact::ContactSearch<dim>>(*primary,
+                                                                   0.);
+    coupling.reinit(*secondary,
+                    *primary,
+                    *search,
+                    parameters.contact.search_distance);
+    enforcement = std::make_unique<Common::Contact::ContactEnforcement<dim>>(
+      parameters.contact, coupling, parameters.block_material.youngs_modulus);
+    enforcement->initialize_active_set();
+    contact_setup_time = seconds_since(start);
+  }
+
+
+
+  // One sparsity pattern serves every active set: it holds the couplings
+  // that any active node's constraint (or penalty term) can create.
+  template <int dim>
+  void
+  RollerProblem<dim>::setup_sparsity()
+  {
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    constraints_dirichlet_and_hanging_nodes,
+                                    true,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    enforcement->add_sparsity_entries(dof_handler,
+                                      constraints_dirichlet_and_hanging_nodes,
+                                      dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+  }
+
+
+
+  // One semismooth Newton iteration: Dirichlet constraints and, for
+  // Lagrange multipliers, one condensed constraint per active node; bulk
+  // tangent and residual; the point load; penalty terms if selected.
+  template <int dim>
+  void
+  RollerProblem<dim>::assemble_and_solve(const double load_factor)
+  {
+    const auto t_assemble = std::chrono::steady_clock::now();
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    constraints.merge(constraints_dirichlet_and_hanging_nodes);
+    if (parameters.contact.enforcement ==
+        Common::Contact::Enforcement::lagrange_multiplier)
+      enforcement->add_constraints(constraints, solution);
+    constraints.close();
+
+    system_matrix = 0.;
+    system_rhs    = 0.;
+    physics->assemble_system(
+      dof_handler, constraints, solution, system_matrix, system_rhs);
+    if (locally_owned_dofs.is_element(load_dof))
+      {
+        Vector<double> load(1);
+        load(0) = -0.5 * load_factor * parameters.loading.force_per_thickness;
+        constraints.distribute_local_to_global(load,
+                                               std::vector<
+                                                 types::global_dof_index>{
+                                                 load_dof},
+                                               system_rhs);
+      }
+    if (parameters.contact.enforcement == Common::Contact::Enforcement::penalty)
+      enforcement->assemble_penalty(
+        constraints, solution, locally_owned_dofs, system_matrix, system_rhs);
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+
+    assembly_time += seconds_since(t_assemble);
+    const auto t_solve = std::chrono::steady_clock::now();
+    newton_update = 0.;
+    linear_solver.solve(system_matrix, newton_update, system_rhs);
+    constraints.distribute(newton_update);
+    linear_solve_time += seconds_since(t_solve);
+    solution_owned += newton_update;
+    solution = solution_owned;
+  }
+
+
+
+  // Residuals of the updated state: equilibrium including the contact
+  // forces of the recovered pressures, and the complementarity function,
+  // both relative to the applied force.
+  template <int dim>
+  Common::Solvers::NewtonResidual
+  RollerProblem<dim>::evaluate_residual(const double load_factor)
+  {
+    const auto   start = std::chrono::steady_clock::now();
+    const double applied =
+      0.5 * load_factor * parameters.loading.force_per_thickness;
+
+    TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
+    physics->assemble_internal_force(dof_handler, solution, r);
+    r *= -1.;
+    if (locally_owned_dofs.is_element(load_dof))
+      r(load_dof) -= applied;
+    r.compress(VectorOperation::add);
+    // Residual of the free DoFs: hanging nodes condensed onto their
+    // parents (a secondary node may be one), Dirichlet rows dropped, since
+    // reactions at the symmetry lines are no contact tractions.
+    constraints_dirichlet_and_hanging_nodes.condense(r);
+    constraints_dirichlet_and_hanging_nodes.set_zero(r);
+    bulk_residual = r;
+
+    enforcement->update_pressures(solution, bulk_residual);
+    enforcement->add_contact_forces(locally_owned_dofs, r);
+    r.compress(VectorOperation::add);
+    constraints_dirichlet_and_hanging_nodes.set_zero(r);
+
+    Common::Solvers::NewtonResidual residual;
+    residual.equilibrium = r.l2_norm() / applied;
+    residual.complementarity =
+      enforcement->complementarity_norm(solution) / applied;
+    residual_time += seconds_since(start);
+    return residual;
+  }
+
+
+
+  template <int dim>
+  Common::Solvers::NewtonStatistics
+  RollerProblem<dim>::solve_load_step(const double load_factor)
+  {
+    enforcement->begin_step();
+    Common::Solvers::NewtonCallbacks callbacks;
+    callbacks.assemble_solve_and_update = [&]() {
+      assemble_and_solve(load_factor);
+    };
+    callbacks.evaluate_residual = [&]() {
+      return evaluate_residual(load_factor);
+    };
+    callbacks.update_active_set = [&]() {
+      const auto         start     = std::chrono::steady_clock::now();
+      const unsigned int n_changed = enforcement->update_active_set(solution);
+      active_set_time += seconds_since(start);
+      return n_changed;
+    };
+    callbacks.is_cycling = [&]() { return enforcement->is_cycling(); };
+
+    Common::Solvers::NonlinearSolverParameters newton =
+      parameters.nonlinear_solver;
+    newton.max_iterations =
+      std::min(newton.max_iterations,
+               parameters.contact.max_active_set_iterations);
+    return Common::Solvers::solve_newton(
+      newton, callbacks, console.stream(Common::IO::Verbosity::verbose));
+  }
+
+
+
+  template <int dim>
+  void
+  RollerProblem<dim>::postprocess_step(
+    const unsigned int                       step,
+    const double                             load_factor,
+    const Common::Solvers::NewtonStatistics &statistics)
+  {
+    const Common::Analytic::HertzLineContact hertz(
+      parameters.roller_material.youngs_modulus,
+      parameters.roller_material.poisson_ratio,
+      parameters.block_material.youngs_modulus,
+      parameters.block_material.poisson_ratio,
+      parameters.geometry.roller_radius,
+      load_factor * parameters.loading.force_per_thickness);
+
+    const auto profile = Common::Contact::contact_profile(
+      coupling, *enforcement, solution, bulk_residual, 0);
+    const double force =
+      Common::Contact::total_contact_force(coupling, *enforcement)[1];
+    const double applied =
+      0.5 * load_factor * parameters.loading.force_per_thickness;
+    double peak = 0.;
+    for (const auto &p : profile)
+      peak = std::max(peak, p.pressure);
+    const double half_width = Common::Contact::contact_extent(profile, 0);
+
+    console.stream() << "Step " << step << ", load factor "
+                     << Common::IO::Console::format(load_factor)
+                     << ": Newton iterations " << statistics.n_iterations
+                     << ", active contact nodes " << enforcement->n_active()
+                     << std::endl;
+    console.print_quantity(
+      "Contact force, half model", "N/mm", -force, "F/F_applied", -force / applied);
+    console.print_quantity("Contact half-width a",
+                           "mm",
+                           half_width,
+                           "a/a_Hertz",
+                           half_width / hertz.half_width());
+    console.print_quantity("Peak pressure p0",
+                           "MPa",
+                           peak,
+                           "p0/p0_Hertz",
+                           peak / hertz.peak_pressure());
+    if (enforcement->touches_search_edge())
+      console.stream() << "  Warning: the contact zone reaches the edge of "
+                          "the search region; increase 'Search distance'."
+                       << std::endl;
+  }
+
+
+
+  // The least any contact solver must pay: one assembly (cell matrices
+  // included) and one linear solve of the same system with the converged
+  // active set held fixed.
+  template <int dim>
+  double
+  RollerProblem<dim>::measure_fixed_active_set_solve()
+  {
+    const TrilinosWrappers::MPI::Vector converged = solution_owned;
+    physics->clear();
+    linear_solver.reset();
+    const auto start = std::chrono::steady_clock::now();
+    assemble_and_solve(1.);
+    const double time = seconds_since(start);
+    solution_owned    = converged;
+    solution          = solution_owned;
+    return time;
+  }
+
+
+
+  template <int dim>
+  void
+  RollerProblem<dim>::output_results(
+    const Common::Solvers::LoadSteppingStatistics &stepping)
+  {
+    const auto &out = parameters.output;
+    const bool  root =
+      Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+
+    const Common::Analytic::HertzLineContact hertz(
+      parameters.roller_material.youngs_modulus,
+      parameters.roller_material.poisson_ratio,
+      parameters.block_material.youngs_modulus,
+      parameters.block_material.poisson_ratio,
+      parameters.geometry.roller_radius,
+      parameters.loading.force_per_thickness);
+
+    const auto profile = Common::Contact::contact_profile(
+      coupling, *enforcement, solution, bulk_residual, 0);
+    double peak = 0.;
+    for (const auto &p : profile)
+      peak = std::max(peak, p.pressure);
+    const double half_width = Common::Contact::contact_extent(profile, 0);
+    const double force =
+      -Common::Contact::total_contact_force(coupling, *enforcement)[1];
+    const double applied = 0.5 * parameters.loading.force_per_thickness;
+    double       reference_norm = 0.;
+    const double l2_error       = Common::Contact::pressure_l2_error<dim>(
+      coupling,
+      *enforcement,
+      [&hertz](const Point<dim> &x) { return hertz.pressure(x[0]); },
+      reference_norm);
+
+    console.stream() << "Results at full load" << std::endl;
+    console.print_quantity("Relative force balance error",
+                           "",
+                           std::abs(force - applied) / applied < 1e-12 ?
+                             0. :
+                             std::abs(force - applied) / applied);
+    console.print_quantity("Relative L2 error of the pressure",
+                           "",
+                           l2_error / reference_norm);
+
+    if (root)
+      {
+        Common::Contact::write_profile_csv(out.path("contact_profile.csv"),
+                                           profile,
+                                           0);
+        std::ofstream reference(out.path("reference_profile.csv"));
+        reference << "x,pressure\n" << std::setprecision(8);
+        const double a = hertz.half_width();
+        for (unsigned int i = 0; i <= 400; ++i)
+          {
+            const double x = 1.5 * a * i / 400.;
+            reference << x << ',' << hertz.pressure(x) << '\n';
+          }
+      }
+
+    if (out.write_plots && root)
+      {
+        Common::IO::PlotDescription plot;
+        plot.title   = "Contact pressure, cylinder on block (benchmark 1)";
+        plot.x_label = "x, distance from the contact centre [mm]";
+        plot.y_label = "contact pressure [MPa]";
+        plot.x_range =
+          "[0:" + std::to_string(1.5 * hertz.half_width()) + "]";
+        plot.series = {{"reference_profile.csv", 1, 2, "Hertz", "lines lw 2"},
+                       {"contact_profile.csv",
+                        1,
+                        2,
+                        "FE, Q" +
+                          std::to_string(parameters.mesh.element_degree),
+                        "linespoints pt 7 ps 0.7"}};
+        if (!Common::IO::write_plot(out.directory, "contact_pressure", plot))
+          console.stream() << "  Note: gnuplot not available; plot script "
+                              "contact_pressure.gp written without PNG."
+                           << std::endl;
+      }
+
+    // summary.json: the headline numbers with their references and the
+    // case; written last, so that only a complete run leaves one.
+    using Common::IO::JsonObject;
+    JsonObject case_description;
+    case_description.set("element_degree", parameters.mesh.element_degree)
+      .set("n_global_refinements", parameters.mesh.n_global_refinements)
+      .set("n_contact_refinements", parameters.mesh.n_contact_refinements)
+      .set("enforcement",
+           parameters.contact.enforcement ==
+               Common::Contact::Enforcement::penalty ?
+             "penalty" :
+             "lagrange multiplier")
+      .set("friction_coefficient", 0.)
+      .set("n_load_steps", parameters.load_stepping.n_steps)
+      .set("n_mpi_ranks",
+           Utilities::MPI::n_mpi_processes(mpi_communicator));
+    if (parameters.contact.enforcement ==
+        Common::Contact::Enforcement::penalty)
+      case_description.set("penalty_stiffness_MPa_per_mm",
+                           parameters.contact.penalty_stiffness);
+
+    const auto contact_distance = [this](const Point<dim> &p) {
+      return std::abs(p[1] - parameters.geometry.block_height) +
+             std::max(0., p[0] - parameters.mesh.contact_zone_length);
+    };
+    JsonObject mesh;
+    mesh.set("n_active_cells", triangulation.n_active_cells())
+      .set("n_dofs", dof_handler.n_dofs())
+      .set("smallest_cell_in_contact_zone_mm",
+           Common::Geometry::smallest_cell_near<dim>(triangulation,
+                                                     contact_distance));
+
+    unsigned int total_iterations = 0;
+    for (const auto n : stepping.newton_iterations)
+      total_iterations += n;
+    JsonObject newton;
+    newton.set("total_iterations", total_iterations)
+      .set("iterations_per_step", stepping.newton_iterations)
+      .set("n_cutbacks", stepping.n_cutbacks);
+
+    JsonObject results;
+    results.set("peak_pressure_MPa", peak)
+      .set("contact_half_width_mm", half_width)
+      .set("contact_force_half_model_N_per_mm", force)
+      .set("applied_force_half_model_N_per_mm", applied)
+      .set("force_balance_relative_error", std::abs(force - applied) / applied)
+      .set("pressure_l2_relative_error", l2_error / reference_norm)
+      .set("n_active_nodes", enforcement->n_active());
+
+    JsonObject reference;
+    reference.set("source", "Hertz line contact, plane strain")
+      .set("peak_pressure_MPa", hertz.peak_pressure())
+      .set("contact_half_width_mm", hertz.half_width());
+
+    JsonObject ratios;
+    ratios.set("peak_pressure", peak / hertz.peak_pressure())
+      .set("contact_half_width", half_width / hertz.half_width());
+
+    JsonObject summary;
+    summary.set("benchmark", "cgs_roller")
+      .set("case", case_description)
+      .set("mesh", mesh)
+      .set("newton", newton)
+      .set("results", results)
+      .set("reference", reference)
+      .set("ratios", ratios)
+      .set("timing_s", timings);
+    if (root)
+      summary.write(out.path("summary.json"));
+  }
+
+
+
+  template <int dim>
+  void
+  RollerProblem<dim>::run()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    console.stream() << "cgs_roller: elastic cylinder on elastic block, "
+                        "Hertz line contact (plane strain, half model)"
+                     << std::endl;
+    make_grid();
+    setup_system();
+    setup_contact();
+    setup_sparsity();
+    unsigned int n_paired = 0;
+    for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+      n_paired += coupling.row(j).has_partner;
+    console.stream() << "Mesh: " << triangulation.n_active_cells()
+                     << " active cells, " << dof_handler.n_dofs()
+                     << " degrees of freedom, Q"
+                     << parameters.mesh.element_degree << std::endl
+                     << "Contact: " << secondary->n_nodes()
+                     << " secondary nodes, " << n_paired << " paired, "
+                     << enforcement->n_active() << " initially closed"
+                     << std::endl;
+    timings.set("setup_s", seconds_since(start));
+    if (parameters.run_control.dry_run)
+      {
+        console.stream() << "Dry run: parameters, mesh and contact pairing "
+                            "are valid."
+                         << std::endl;
+        return;
+      }
+
+    const auto &out = parameters.output;
+    out.prepare_directory({"summary.json",
+                           "contact_profile.csv",
+                           "reference_profile.csv",
+                           "contact_pressure.png",
+                           "contact_pressure.gp",
+                           "solution.pvd",
+                           "used_parameters.prm"},
+                          mpi_communicator);
+    if (console.is_root())
+      {
+        std::ofstream used(out.path("used_parameters.prm"));
+        used << parameters.used_parameters;
+      }
+
+    Common::IO::SolutionOutput<dim> solution_output(out,
+                                                    "solution",
+                                                    mpi_communicator);
+    const Common::Physics::StressPostprocessor<dim> stress(*physics);
+
+    Common::Solvers::LoadStepCallbacks callbacks;
+    callbacks.solve = [&](const double load_factor) {
+      const auto start      = std::chrono::steady_clock::now();
+      const auto statistics = solve_load_step(load_factor);
+      contact_solve_time += seconds_since(start);
+      return statistics;
+    };
+    callbacks.accept = [&](const unsigned int                       step,
+                           const double                             load,
+                           const Common::Solvers::NewtonStatistics &stats) {
+      accepted_solution = solution_owned;
+      enforcement->commit();
+      postprocess_step(step, load, stats);
+      if (out.write_graphical_output)
+        {
+          Common::IO::NodalScalarField pressure{"contact_pressure", {}};
+          for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+            pressure.values[secondary->node(j).dofs[0]] =
+              enforcement->pressure(j);
+          solution_output.write(
+            dof_handler, mapping, solution, {&stress}, {pressure}, load, step);
+        }
+    };
+    callbacks.reject = [&]() {
+      solution_owned = accepted_solution;
+      solution       = solution_owned;
+      enforcement->restore();
+    };
+
+    const auto solve_start = std::chrono::steady_clock::now();
+    const auto stepping    = Common::Solvers::run_load_stepping(
+      parameters.load_stepping, callbacks, console);
+    contact_solve_time += contact_setup_time;
+    timings.set("contact_setup_s", contact_setup_time)
+      .set("contact_solve_s", contact_solve_time)
+      .set("load_stepping_s", seconds_since(solve_start))
+      .set("assembly_s", assembly_time)
+      .set("linear_solve_s", linear_solve_time)
+      .set("residual_s", residual_time)
+      .set("active_set_update_s", active_set_time);
+
+    if (parameters.run_control.measure_contact_cost)
+      {
+        const double reference = measure_fixed_active_set_solve();
+        timings.set("fixed_active_set_solve_s", reference)
+          .set("contact_cost_ratio", contact_solve_time / reference);
+        console.stream() << "Cost of contact: " << std::fixed
+                         << std::setprecision(2)
+                         << contact_solve_time / reference
+                         << " times one assembly and solve with the active set "
+                            "held fixed"
+                         << std::endl;
+      }
+    timings.set("total_s", seconds_since(start));
+    output_results(stepping);
+  }
+
+  template class RollerProblem<2>;
+} // namespace CgsRoller

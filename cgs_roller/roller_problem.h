@@ -1,0 +1,143 @@
+/*
+ * The cgs_roller problem: geometry, boundary conditions and loading of
+ * benchmark 1, wired to the contact, material and solver components of the
+ * common library. No contact or material algorithm lives here.
+ */
+#ifndef cgs_roller_roller_problem_h
+#define cgs_roller_roller_problem_h
+
+#include <common/analytic/hertz.h>
+#include <common/contact/contact_enforcement.h>
+#include <common/contact/contact_search.h>
+#include <common/contact/contact_surface.h>
+#include <common/contact/mortar_coupling.h>
+#include <common/io/console.h>
+#include <common/io/json_writer.h>
+#include <common/physics/small_strain_elasticity.h>
+#include <common/solvers/linear_solver.h>
+#include <common/solvers/load_stepping.h>
+
+#include "parameters.h"
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/distributed/shared_tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+
+namespace CgsRoller
+{
+  using namespace dealii;
+
+  /** Boundary ids of the two bodies (see README.md). */
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id block_bottom    = 1;
+    constexpr types::boundary_id block_top       = 2;
+    constexpr types::boundary_id block_symmetry  = 3;
+    constexpr types::boundary_id block_side      = 4;
+    constexpr types::boundary_id roller_surface  = 5;
+    constexpr types::boundary_id roller_symmetry = 6;
+  } // namespace BoundaryIds
+
+  /** Material ids: one per body. */
+  namespace MaterialIds
+  {
+    constexpr types::material_id roller = 1;
+    constexpr types::material_id block  = 2;
+  } // namespace MaterialIds
+
+  /**
+   * Half model of a cylinder on a block, plane strain, small strain,
+   * frictionless mortar contact.
+   */
+  template <int dim>
+  class RollerProblem
+  {
+  public:
+    explicit RollerProblem(const Parameters &parameters);
+
+    /** Build, solve all load steps and write the results. */
+    void
+    run();
+
+  private:
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    setup_contact();
+    void
+    setup_sparsity();
+    Common::Solvers::NewtonStatistics
+    solve_load_step(const double load_factor);
+    void
+    assemble_and_solve(const double load_factor);
+    Common::Solvers::NewtonResidual
+    evaluate_residual(const double load_factor);
+    void
+    postprocess_step(const unsigned int                       step,
+                     const double                             load_factor,
+                     const Common::Solvers::NewtonStatistics &statistics);
+    double
+    measure_fixed_active_set_solve();
+    void
+    output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
+
+    // Run set-up
+    const Parameters     &parameters;
+    MPI_Comm              mpi_communicator;
+    Common::IO::Console   console;
+
+    // Discretisation
+    parallel::shared::Triangulation<dim> triangulation;
+    const FESystem<dim>                  fe;
+    const MappingQ<dim>                  mapping;
+    DoFHandler<dim>                      dof_handler;
+    IndexSet                             locally_owned_dofs;
+    IndexSet                             locally_relevant_dofs;
+    types::global_dof_index              load_dof;
+    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
+
+    // Contact
+    std::unique_ptr<Common::Contact::ContactSurface<dim>>     primary;
+    std::unique_ptr<Common::Contact::ContactSurface<dim>>     secondary;
+    std::unique_ptr<Common::Contact::ContactSearch<dim>>      search;
+    Common::Contact::MortarCoupling<dim>                      coupling;
+    std::unique_ptr<Common::Contact::ContactEnforcement<dim>> enforcement;
+
+    // Linear algebra
+    Common::Solvers::LinearSolver  linear_solver;
+    AffineConstraints<double>      constraints_dirichlet_and_hanging_nodes;
+    AffineConstraints<double>      constraints;
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  solution;
+    TrilinosWrappers::MPI::Vector  solution_owned;
+    TrilinosWrappers::MPI::Vector  accepted_solution;
+    TrilinosWrappers::MPI::Vector  newton_update;
+    TrilinosWrappers::MPI::Vector  system_rhs;
+    TrilinosWrappers::MPI::Vector  bulk_residual;
+
+    // Results
+    std::vector<unsigned int>  iterations_per_step;
+    Common::IO::JsonObject     timings;
+    double                     contact_setup_time;
+    double                     contact_solve_time;
+    double                     assembly_time;
+    double                     linear_solve_time;
+    double                     residual_time;
+    double                     active_set_time;
+  };
+} // namespace CgsRoller
+
+#endif

@@ -1,0 +1,66 @@
+/**
+ * @file contact_parameters.h
+ * The "Contact" subsection: which boundaries touch, how the normal
+ * condition is enforced, and the search distance. Strings are turned into
+ * enums once, here.
+ */
+#ifndef common_contact_contact_parameters_h
+#define common_contact_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+namespace Common
+{
+  namespace Contact
+  {
+    /** Values of the parameter "Enforcement" in subsection "Contact". */
+    enum class Enforcement
+    {
+      /** Dual Lagrange multipliers, condensed; semismooth Newton. */
+      lagrange_multiplier,
+      /** Penalty on the mean gap of each secondary node. */
+      penalty
+    };
+
+    /** Values of the parameter "Friction law" in subsection "Contact". */
+    enum class FrictionLaw
+    {
+      frictionless
+    };
+
+    /**
+     * @brief One contact pair: a primary (projection target) and a secondary
+     * (integration and multiplier) surface, with its enforcement.
+     */
+    struct ContactParameters
+    {
+      /** @brief Declare the entries of subsection "Contact". */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** @brief Read and check the entries of subsection "Contact". */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      dealii::types::boundary_id primary_boundary_id;
+      dealii::types::boundary_id secondary_boundary_id;
+      Enforcement                enforcement;
+      FrictionLaw                friction_law;
+      /** Penalty stiffness (MPa/mm): pressure per unit penetration. */
+      double penalty_stiffness;
+      /** Factor c_N of the complementarity constant c = c_N E / h
+       * (dimensionless). Changes the iteration path, never the answer. */
+      double ncp_factor;
+      /** Largest initial gap for which a secondary point is paired (mm). */
+      double search_distance;
+      /** Largest number of semismooth Newton iterations that may change the
+       * active set before the load step is cut back. */
+      unsigned int max_active_set_iterations;
+      /** Extrapolate pure release steps of the active set (path only). */
+      bool accelerate_release;
+    };
+  } // namespace Contact
+} // namespace Common
+
+#endif

@@ -1,0 +1,113 @@
+/**
+ * @file contact_postprocessor.h
+ * Contact results from a converged state: the profile of pressure,
+ * tangential traction, slip, gap and status at the secondary nodes, the
+ * total contact force, the extent of the contact zone and the L2 error of
+ * the pressure against a reference. Reads the enforcement's state; changes
+ * nothing.
+ */
+#ifndef common_contact_contact_postprocessor_h
+#define common_contact_contact_postprocessor_h
+
+#include <common/contact/contact_enforcement.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace Common
+{
+  namespace Contact
+  {
+    /**
+     * @brief Result at one paired secondary node.
+     */
+    template <int dim>
+    struct ContactPointResult
+    {
+      /** Secondary node index. */
+      unsigned int node;
+      /** Reference position (mm). */
+      dealii::Point<dim> position;
+      /** Normal pressure (MPa), >= 0 in compression. */
+      double pressure;
+      /** Tangential traction on the secondary surface along the tangent
+       * t = (n_y, -n_x) in 2D (MPa). */
+      double tangential_traction;
+      /** Relative tangential displacement, primary minus secondary, along
+       * t (mm). */
+      double slip;
+      /** Mean normal gap g~_j / D_j (mm), negative when penetrating. */
+      double gap;
+      /** "open", "stick" or "slip" (a closed frictionless point slips). */
+      std::string status;
+    };
+
+    /**
+     * @brief Results at every paired secondary node, sorted by the
+     * coordinate @p axis of the reference position.
+     * @param[in] bulk_residual f_ext - f_int (N, ghosted): gives the
+     * tangential traction.
+     */
+    template <int dim>
+    std::vector<ContactPointResult<dim>>
+    contact_profile(const MortarCoupling<dim>                   &coupling,
+                    const ContactEnforcement<dim>               &enforcement,
+                    const dealii::TrilinosWrappers::MPI::Vector &u,
+                    const dealii::TrilinosWrappers::MPI::Vector &bulk_residual,
+                    const unsigned int                           axis);
+
+    /**
+     * @brief Total contact force on the secondary surface,
+     * \f$-\sum_j\lambda_j D_j n_j\f$ (N, or N/mm in plane strain).
+     */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    total_contact_force(const MortarCoupling<dim>     &coupling,
+                        const ContactEnforcement<dim> &enforcement);
+
+    /**
+     * @brief Extent of the contact zone along a sorted profile, measured
+     * from the profile's first point.
+     *
+     * The edge lies between the last loaded node and the next one. Near a
+     * smooth contact edge the pressure behaves like
+     * \f$p \propto \sqrt{a-x}\f$, so \f$p^2\f$ is extrapolated linearly
+     * from the last two loaded nodes and the result is kept within that
+     * node interval.
+     * @return Distance from the first profile point to the edge (mm).
+     */
+    template <int dim>
+    double
+    contact_extent(const std::vector<ContactPointResult<dim>> &profile,
+                   const unsigned int                          axis);
+
+    /**
+     * @brief L2 norm over the secondary surface of
+     * \f$p_h - p_{ref}\f$, where \f$p_h = \sum_j \lambda_j N_j\f$
+     * interpolates the nodal pressures (MPa mm^((dim-1)/2)).
+     * @param[out] reference_norm The L2 norm of p_ref over the same
+     * surface.
+     */
+    template <int dim>
+    double
+    pressure_l2_error(
+      const MortarCoupling<dim>                                 &coupling,
+      const ContactEnforcement<dim>                             &enforcement,
+      const std::function<double(const dealii::Point<dim> &)>   &reference,
+      double                                                    &reference_norm);
+
+    /**
+     * @brief Write the profile as CSV with the header
+     * `x,pressure,tangential_traction,slip,gap,status`, where x is the
+     * coordinate @p axis (mm; MPa; MPa; mm; mm).
+     */
+    template <int dim>
+    void
+    write_profile_csv(const std::string                          &filename,
+                      const std::vector<ContactPointResult<dim>> &profile,
+                      const unsigned int                          axis);
+  } // namespace Contact
+} // namespace Common
+
+#endif

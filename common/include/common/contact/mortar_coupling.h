@@ -1,0 +1,134 @@
+/**
+ * @file mortar_coupling.h
+ * Mortar (segment-to-segment) integration between a secondary and a
+ * primary surface with dual Lagrange multiplier shape functions on the
+ * secondary side. Produces, per secondary node j, the diagonal entry D_j,
+ * the primary weights M_jk and the nodal normal n_j, from which the
+ * weighted gap follows:
+ * \f[ \tilde g_j = n_j\cdot\Big(\sum_k M_{jk}\,x_k - D_j\,x_j\Big),\qquad
+ *     D_j = \int \psi_j N_j,\quad M_{jk} = \int \psi_j\,(N_k\circ\pi). \f]
+ * Geometry and integration only: no enforcement, no material.
+ *
+ * References: B. Wohlmuth, SIAM J. Numer. Anal. 38 (2000) 989-1012;
+ * A. Popp, M. Gee, W. Wall, IJNME 79 (2009) 1354-1391 (2D segmentation).
+ */
+#ifndef common_contact_mortar_coupling_h
+#define common_contact_mortar_coupling_h
+
+#include <common/contact/contact_search.h>
+#include <common/contact/contact_surface.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace Common
+{
+  namespace Contact
+  {
+    /**
+     * @brief The row of the mortar operators that belongs to one secondary
+     * node.
+     */
+    template <int dim>
+    struct MortarRow
+    {
+      /** D_j: integral of the node's shape function (mm^(dim-1)). */
+      double weight = 0.;
+      /** Averaged outward unit normal of the secondary surface at j. */
+      dealii::Tensor<1, dim> normal;
+      /** (primary node k, M_jk in mm^(dim-1)), sorted by k. */
+      std::vector<std::pair<unsigned int, double>> primary_weights;
+      /** True if every face around j is fully covered by primary faces
+       * within the search distance: only such nodes can come into
+       * contact. */
+      bool has_partner = false;
+      /** Size of the largest face around j (mm). */
+      double mesh_size = 0.;
+      /** Gap at the node itself, along its normal, when the operators
+       * were integrated (mm); +infinity if the normal misses the primary
+       * surface. Decides which nodes touch at the start. */
+      double nodal_gap = std::numeric_limits<double>::infinity();
+    };
+
+    /**
+     * @brief Mortar operators D (diagonal) and M between two surfaces.
+     */
+    template <int dim>
+    class MortarCoupling
+    {
+    public:
+      /**
+       * @brief Integrate D and M over the secondary surface.
+       *
+       * Each secondary face is cut into segments by the images of the
+       * primary face boundaries, projected along the secondary normal
+       * field; each segment is integrated with Gauss quadrature, so the
+       * operators are exact for straight faces and the contact patch test
+       * is passed exactly. Implemented for dim = 2.
+       *
+       * @param[in] secondary Secondary surface.
+       * @param[in] primary Primary surface.
+       * @param[in] search Search structure over @p primary.
+       * @param[in] search_distance Points with |gap| above this are not
+       * paired (mm).
+       */
+      void
+      reinit(const ContactSurface<dim> &secondary,
+             const ContactSurface<dim> &primary,
+             const ContactSearch<dim>  &search,
+             const double               search_distance);
+
+      /** @brief Number of rows (= secondary nodes). */
+      unsigned int
+      n_rows() const;
+
+      /** @brief Row of secondary node @p j. */
+      const MortarRow<dim> &
+      row(const unsigned int j) const;
+
+      /**
+       * @brief Dual basis coefficients of secondary face @p f:
+       * \f$\psi_a = \sum_b A_{ab} N_b\f$, with
+       * \f$A = D\,M_e^{-1}\f$ and \f$\int\psi_a N_b = \delta_{ab}\int N_b\f$.
+       */
+      const dealii::FullMatrix<double> &
+      dual_basis(const unsigned int f) const;
+
+      /**
+       * @brief Weighted gap \f$\tilde g_j\f$ (mm^dim) for the displacement
+       * @p u, from reference positions plus displacements.
+       */
+      template <typename VectorType>
+      double
+      weighted_gap(const unsigned int j, const VectorType &u) const;
+
+      /**
+       * @brief Mean relative displacement of the primary surface with
+       * respect to secondary node j,
+       * \f$(\sum_k M_{jk} u_k - D_j u_j)/D_j\f$ (mm).
+       */
+      template <typename VectorType>
+      dealii::Tensor<1, dim>
+      relative_displacement(const unsigned int j, const VectorType &u) const;
+
+      /** @brief The secondary surface of the last reinit(). */
+      const ContactSurface<dim> &
+      secondary_surface() const;
+
+      /** @brief The primary surface of the last reinit(). */
+      const ContactSurface<dim> &
+      primary_surface() const;
+
+    private:
+      const ContactSurface<dim>              *secondary = nullptr;
+      const ContactSurface<dim>              *primary   = nullptr;
+      std::vector<MortarRow<dim>>             rows;
+      std::vector<dealii::FullMatrix<double>> dual_coefficients;
+    };
+  } // namespace Contact
+} // namespace Common
+
+#endif

@@ -1,0 +1,59 @@
+/**
+ * @file two_body_meshes.h
+ * Meshes of several bodies in one triangulation: coarse meshes are joined
+ * without merging coincident vertices (bodies that touch at a point stay
+ * separate), keeping material and manifold ids; graded local refinement
+ * toward a region such as a contact zone.
+ */
+#ifndef common_geometry_two_body_meshes_h
+#define common_geometry_two_body_meshes_h
+
+#include <deal.II/base/point.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <functional>
+#include <vector>
+
+namespace Common
+{
+  namespace Geometry
+  {
+    /**
+     * @brief Join coarse meshes into @p result without merging any
+     * vertices. Cell material and manifold ids and boundary face manifold
+     * and boundary ids are kept (2D: boundary lines; 3D: boundary quads).
+     * @param[in] parts Coarse (unrefined) triangulations.
+     */
+    template <int dim>
+    void
+    join_bodies(const std::vector<const dealii::Triangulation<dim> *> &parts,
+                dealii::Triangulation<dim>                            &result);
+
+    /**
+     * @brief Graded refinement toward a region: in each of @p n_passes
+     * passes, refine every active cell whose centre lies closer to the
+     * region than @p factor times its diameter. Cells shrink by half per
+     * band, and each band is as thick as a few of its cells.
+     * @param[in] distance Distance of a point to the region (mm).
+     */
+    template <int dim>
+    void
+    refine_toward(dealii::Triangulation<dim>                           &tria,
+                  const std::function<double(const dealii::Point<dim> &)> &distance,
+                  const unsigned int                                    n_passes,
+                  const double                                          factor);
+
+    /**
+     * @brief Smallest cell diameter near a region: the minimum over cells
+     * with distance(centre) < their diameter (mm).
+     */
+    template <int dim>
+    double
+    smallest_cell_near(
+      const dealii::Triangulation<dim>                        &tria,
+      const std::function<double(const dealii::Point<dim> &)> &distance);
+  } // namespace Geometry
+} // namespace Common
+
+#endif

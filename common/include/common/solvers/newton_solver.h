@@ -1,0 +1,88 @@
+/**
+ * @file newton_solver.h
+ * Semismooth Newton loop that sees only callbacks: it knows no matrices,
+ * meshes or contact. Convergence needs an unchanged active set and small
+ * equilibrium and complementarity residuals.
+ */
+#ifndef common_solvers_newton_solver_h
+#define common_solvers_newton_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace Common
+{
+  namespace Solvers
+  {
+    /**
+     * @brief Parameters of subsection "Nonlinear solver".
+     */
+    struct NonlinearSolverParameters
+    {
+      /** @brief Declare the entries of subsection "Nonlinear solver". */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** @brief Read the entries of subsection "Nonlinear solver". */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      unsigned int max_iterations;
+      /** Tolerance on the residuals relative to the external load. */
+      double tolerance;
+    };
+
+    /**
+     * @brief Residuals after an iteration, relative to the external load.
+     */
+    struct NewtonResidual
+    {
+      double equilibrium     = 0.;
+      double complementarity = 0.;
+    };
+
+    /**
+     * @brief What the Newton loop needs from a problem.
+     */
+    struct NewtonCallbacks
+    {
+      /** Assemble the linearised system with the current active set, solve
+       * it and apply the increment. */
+      std::function<void()> assemble_solve_and_update;
+      /** Residuals of the updated state (also updates the pressures). */
+      std::function<NewtonResidual()> evaluate_residual;
+      /** Apply the active-set rule; returns the number of changed points. */
+      std::function<unsigned int()> update_active_set;
+      /** True if the active set returned to an earlier state. */
+      std::function<bool()> is_cycling;
+    };
+
+    /**
+     * @brief Outcome of one Newton solve.
+     */
+    struct NewtonStatistics
+    {
+      unsigned int                n_iterations = 0;
+      bool                        converged    = false;
+      std::string                 failure;
+      std::vector<NewtonResidual> residuals;
+      std::vector<unsigned int>   active_set_changes;
+    };
+
+    /**
+     * @brief Run the semismooth Newton iteration.
+     * @param[in] verbose Stream for the residual history (one line per
+     * iteration).
+     */
+    NewtonStatistics
+    solve_newton(const NonlinearSolverParameters &parameters,
+                 const NewtonCallbacks           &callbacks,
+                 dealii::ConditionalOStream      &verbose);
+  } // namespace Solvers
+} // namespace Common
+
+#endif

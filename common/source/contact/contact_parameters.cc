@@ -1,0 +1,111 @@
+#include <common/contact/contact_parameters.h>
+
+namespace Common
+{
+  namespace Contact
+  {
+    using namespace dealii;
+
+    void
+    ContactParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      {
+        prm.declare_entry("Primary boundary id",
+                          "0",
+                          Patterns::Integer(0, 254),
+                          "Boundary id of the primary surface, onto which "
+                          "secondary points are projected. Dimensionless.");
+        prm.declare_entry("Secondary boundary id",
+                          "1",
+                          Patterns::Integer(0, 254),
+                          "Boundary id of the secondary surface, which "
+                          "carries the Lagrange multipliers and where "
+                          "pressures are reported. Dimensionless.");
+        prm.declare_entry("Enforcement",
+                          "lagrange multiplier",
+                          Patterns::Selection("lagrange multiplier|penalty"),
+                          "Enforcement of the normal contact condition: "
+                          "'lagrange multiplier' (dual mortar multipliers, "
+                          "exact, no user constant changes the answer) or "
+                          "'penalty' (answer depends on 'Penalty "
+                          "stiffness').");
+        prm.declare_entry("Friction law",
+                          "frictionless",
+                          Patterns::Selection("frictionless"),
+                          "Tangential contact law.");
+        prm.declare_entry("Penalty stiffness",
+                          "1e6",
+                          Patterns::Double(0.),
+                          "Penalty enforcement only: contact pressure per "
+                          "unit penetration. Units: MPa/mm (N/mm^3).");
+        prm.declare_entry("NCP constant factor",
+                          "1.0",
+                          Patterns::Double(0.),
+                          "Lagrange multipliers only: factor c_N in the "
+                          "complementarity constant c = c_N E/h of the "
+                          "semismooth Newton method (E: secondary Young's "
+                          "modulus, h: local mesh size). Affects the "
+                          "iteration path only. Dimensionless, > 0.");
+        prm.declare_entry("Search distance",
+                          "5.0",
+                          Patterns::Double(0.),
+                          "Secondary points whose initial normal gap to the "
+                          "primary surface exceeds this distance are never "
+                          "paired. Must exceed the largest closing of the "
+                          "gap. Units: mm.");
+        prm.declare_entry("Accelerate active set release",
+                          "true",
+                          Patterns::Bool(),
+                          "When an iteration only opens points (a contact "
+                          "zone larger than the solution), also open the "
+                          "closed points that lie within the mirror image of "
+                          "the opened band. An Aitken-type extrapolation of "
+                          "the contact edge: the plain rule shrinks an "
+                          "oversized zone only linearly. It is switched off "
+                          "for the rest of the step as soon as it opens too "
+                          "much. Affects the iteration path only.");
+        prm.declare_entry("Maximum active set iterations",
+                          "30",
+                          Patterns::Integer(1),
+                          "Semismooth Newton iterations allowed per load "
+                          "step before the step is cut back.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ContactParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      {
+        primary_boundary_id   = prm.get_integer("Primary boundary id");
+        secondary_boundary_id = prm.get_integer("Secondary boundary id");
+        enforcement = (prm.get("Enforcement") == "penalty" ?
+                         Enforcement::penalty :
+                         Enforcement::lagrange_multiplier);
+        friction_law              = FrictionLaw::frictionless;
+        penalty_stiffness         = prm.get_double("Penalty stiffness");
+        ncp_factor                = prm.get_double("NCP constant factor");
+        search_distance           = prm.get_double("Search distance");
+        max_active_set_iterations = prm.get_integer(
+          "Maximum active set iterations");
+        accelerate_release = prm.get_bool("Accelerate active set release");
+      }
+      prm.leave_subsection();
+      AssertThrow(primary_boundary_id != secondary_boundary_id,
+                  ExcMessage("Contact: primary and secondary boundary ids "
+                             "must differ."));
+      AssertThrow(penalty_stiffness > 0.,
+                  ExcMessage("Contact: 'Penalty stiffness' must be "
+                             "positive."));
+      AssertThrow(ncp_factor > 0.,
+                  ExcMessage("Contact: 'NCP constant factor' must be "
+                             "positive."));
+      AssertThrow(search_distance > 0.,
+                  ExcMessage("Contact: 'Search distance' must be positive."));
+    }
+  } // namespace Contact
+} // namespace Common

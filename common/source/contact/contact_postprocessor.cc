@@ -1,0 +1,211 @@
+#include <common/contact/contact_postprocessor.h>
+
+#include <deal.II/base/quadrature_lib.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+
+namespace Common
+{
+  namespace Contact
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      template <int dim>
+      Tensor<1, dim>
+      tangent_of(const Tensor<1, dim> &n)
+      {
+        Tensor<1, dim> t;
+        if constexpr (dim == 2)
+          {
+            t[0] = n[1];
+            t[1] = -n[0];
+          }
+        else
+          {
+            // Any unit vector orthogonal to n; 3D profiles refine this.
+            const Tensor<1, dim> e =
+              (std::abs(n[0]) < 0.9 ? Tensor<1, dim>({1., 0., 0.}) :
+                                      Tensor<1, dim>({0., 1., 0.}));
+            t = e - (e * n) * n;
+            t /= t.norm();
+          }
+        return t;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    std::vector<ContactPointResult<dim>>
+    contact_profile(const MortarCoupling<dim>           &coupling,
+                    const ContactEnforcement<dim>       &enforcement,
+                    const TrilinosWrappers::MPI::Vector &u,
+                    const TrilinosWrappers::MPI::Vector &bulk_residual,
+                    const unsigned int                   axis)
+    {
+      std::vector<ContactPointResult<dim>> profile;
+      const auto &surface = coupling.secondary_surface();
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          const MortarRow<dim> &row = coupling.row(j);
+          if (!row.has_partner)
+            continue;
+          const auto          &node = surface.node(j);
+          const Tensor<1, dim> t    = tangent_of(row.normal);
+          Tensor<1, dim>       r;
+          for (unsigned int c = 0; c < dim; ++c)
+            r[c] = bulk_residual(node.dofs[c]);
+
+          ContactPointResult<dim> result;
+          result.node     = j;
+          result.position = node.reference_position;
+          result.pressure = enforcement.pressure(j);
+          // The contact force on node j is -r_j: its tangential part per
+          // unit area is the traction on the secondary surface.
+          result.tangential_traction =
+            enforcement.is_active(j) ? -(r * t) / row.weight : 0.;
+          result.slip   = coupling.relative_displacement(j, u) * t;
+          result.gap    = coupling.weighted_gap(j, u) / row.weight;
+          result.status = enforcement.is_active(j) ? "slip" : "open";
+          profile.push_back(result);
+        }
+      std::sort(profile.begin(),
+                profile.end(),
+                [axis](const auto &a, const auto &b) {
+                  return a.position[axis] < b.position[axis];
+                });
+      return profile;
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    total_contact_force(const MortarCoupling<dim>     &coupling,
+                        const ContactEnforcement<dim> &enforcement)
+    {
+      Tensor<1, dim> force;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        force -= enforcement.pressure(j) * coupling.row(j).weight *
+                 coupling.row(j).normal;
+      return force;
+    }
+
+
+
+    template <int dim>
+    double
+    contact_extent(const std::vector<ContactPointResult<dim>> &profile,
+                   const unsigned int                          axis)
+    {
+      if (profile.empty())
+        return 0.;
+      int last = -1;
+      for (unsigned int i = 0; i < profile.size(); ++i)
+        if (profile[i].pressure > 0.)
+          last = i;
+      const double x0 = profile[0].position[axis];
+      if (last < 0)
+        return 0.;
+      const double x_last = profile[last].position[axis];
+      if (last + 1 >= static_cast<int>(profile.size()) || last == 0)
+        return x_last - x0;
+      const double x_next = profile[last + 1].position[axis];
+      const double x_prev = profile[last - 1].position[axis];
+      const double q_last = std::pow(profile[last].pressure, 2);
+      const double q_prev = std::pow(profile[last - 1].pressure, 2);
+      double       edge   = x_last;
+      if (q_prev > q_last)
+        edge = x_last + q_last * (x_last - x_prev) / (q_prev - q_last);
+      return std::clamp(edge, x_last, x_next) - x0;
+    }
+
+
+
+    template <int dim>
+    double
+    pressure_l2_error(const MortarCoupling<dim>                    &coupling,
+                      const ContactEnforcement<dim>                &enforcement,
+                      const std::function<double(const Point<dim> &)> &reference,
+                      double &reference_norm)
+    {
+      const auto           &surface = coupling.secondary_surface();
+      const QGauss<dim - 1> quadrature(surface.base_element().degree + 4);
+      std::vector<double>   N;
+      double                error_sq = 0., reference_sq = 0.;
+      for (unsigned int f = 0; f < surface.n_faces(); ++f)
+        {
+          const auto &face = surface.face(f);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              surface.shape_values(f, quadrature.point(q), N);
+              double     p_h = 0.;
+              Point<dim> x;
+              for (unsigned int a = 0; a < N.size(); ++a)
+                {
+                  p_h += N[a] * enforcement.pressure(face.nodes[a]);
+                  x += N[a] * surface.node(face.nodes[a]).reference_position;
+                }
+              const double JxW =
+                surface.jacobian(f, quadrature.point(q)) * quadrature.weight(q);
+              const double p_ref = reference(x);
+              error_sq += std::pow(p_h - p_ref, 2) * JxW;
+              reference_sq += p_ref * p_ref * JxW;
+            }
+        }
+      reference_norm = std::sqrt(reference_sq);
+      return std::sqrt(error_sq);
+    }
+
+
+
+    template <int dim>
+    void
+    write_profile_csv(const std::string                          &filename,
+                      const std::vector<ContactPointResult<dim>> &profile,
+                      const unsigned int                          axis)
+    {
+      std::ofstream out(filename);
+      AssertThrow(out, ExcMessage("Cannot write " + filename));
+      out << "x,pressure,tangential_traction,slip,gap,status\n";
+      out << std::setprecision(8);
+      for (const auto &p : profile)
+        {
+          AssertThrow(std::isfinite(p.pressure) &&
+                        std::isfinite(p.tangential_traction) &&
+                        std::isfinite(p.slip) && std::isfinite(p.gap),
+                      ExcMessage("Contact profile holds a non-finite value."));
+          out << p.position[axis] << ',' << p.pressure << ','
+              << p.tangential_traction << ',' << p.slip << ',' << p.gap << ','
+              << p.status << '\n';
+        }
+    }
+
+#define INSTANTIATE(dim)                                                     \
+  template std::vector<ContactPointResult<dim>> contact_profile(            \
+    const MortarCoupling<dim> &,                                            \
+    const ContactEnforcement<dim> &,                                        \
+    const TrilinosWrappers::MPI::Vector &,                                  \
+    const TrilinosWrappers::MPI::Vector &,                                  \
+    const unsigned int);                                                    \
+  template Tensor<1, dim> total_contact_force(const MortarCoupling<dim> &,  \
+                                              const ContactEnforcement<dim> &); \
+  template double contact_extent(const std::vector<ContactPointResult<dim>> &, \
+                                 const unsigned int);                       \
+  template double pressure_l2_error(                                        \
+    const MortarCoupling<dim> &,                                            \
+    const ContactEnforcement<dim> &,                                        \
+    const std::function<double(const Point<dim> &)> &,                      \
+    double &);                                                              \
+  template void write_profile_csv(const std::string &,                      \
+                                  const std::vector<ContactPointResult<dim>> &, \
+                                  const unsigned int);
+    INSTANTIATE(2)
+    INSTANTIATE(3)
+#undef INSTANTIATE
+  } // namespace Contact
+} // namespace Common

@@ -1,0 +1,111 @@
+#include <common/geometry/two_body_meshes.h>
+
+#include <deal.II/grid/tria_description.h>
+
+#include <limits>
+
+namespace Common
+{
+  namespace Geometry
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void
+    join_bodies(const std::vector<const Triangulation<dim> *> &parts,
+                Triangulation<dim>                            &result)
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      SubCellData                subcell_data;
+      for (const Triangulation<dim> *part : parts)
+        {
+          AssertThrow(part->n_levels() == 1,
+                      ExcMessage("join_bodies needs coarse meshes."));
+          const unsigned int offset = vertices.size();
+          vertices.insert(vertices.end(),
+                          part->get_vertices().begin(),
+                          part->get_vertices().end());
+          for (const auto &cell : part->active_cell_iterators())
+            {
+              CellData<dim> data;
+              for (const unsigned int v : cell->vertex_indices())
+                data.vertices[v] = cell->vertex_index(v) + offset;
+              data.material_id = cell->material_id();
+              data.manifold_id = cell->manifold_id();
+              cells.push_back(data);
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->at_boundary())
+                  {
+                    CellData<dim - 1> face_data;
+                    for (const unsigned int v : cell->face(f)->vertex_indices())
+                      face_data.vertices[v] =
+                        cell->face(f)->vertex_index(v) + offset;
+                    face_data.boundary_id = cell->face(f)->boundary_id();
+                    face_data.manifold_id = cell->face(f)->manifold_id();
+                    if constexpr (dim == 2)
+                      subcell_data.boundary_lines.push_back(face_data);
+                    else if constexpr (dim == 3)
+                      subcell_data.boundary_quads.push_back(face_data);
+                  }
+            }
+        }
+      result.create_triangulation(vertices, cells, subcell_data);
+    }
+
+
+
+    template <int dim>
+    void
+    refine_toward(Triangulation<dim>                               &tria,
+                  const std::function<double(const Point<dim> &)> &distance,
+                  const unsigned int                               n_passes,
+                  const double                                     factor)
+    {
+      for (unsigned int pass = 0; pass < n_passes; ++pass)
+        {
+          for (const auto &cell : tria.active_cell_iterators())
+            if (distance(cell->center()) < factor * cell->diameter())
+              cell->set_refine_flag();
+          tria.execute_coarsening_and_refinement();
+        }
+    }
+
+
+
+    template <int dim>
+    double
+    smallest_cell_near(const Triangulation<dim>                        &tria,
+                       const std::function<double(const Point<dim> &)> &distance)
+    {
+      double h = std::numeric_limits<double>::max();
+      for (const auto &cell : tria.active_cell_iterators())
+        if (distance(cell->center()) < cell->diameter())
+          h = std::min(h, cell->diameter());
+      return h;
+    }
+
+    template void
+    join_bodies(const std::vector<const Triangulation<2> *> &,
+                Triangulation<2> &);
+    template void
+    join_bodies(const std::vector<const Triangulation<3> *> &,
+                Triangulation<3> &);
+    template void
+    refine_toward(Triangulation<2> &,
+                  const std::function<double(const Point<2> &)> &,
+                  const unsigned int,
+                  const double);
+    template void
+    refine_toward(Triangulation<3> &,
+                  const std::function<double(const Point<3> &)> &,
+                  const unsigned int,
+                  const double);
+    template double
+    smallest_cell_near(const Triangulation<2> &,
+                       const std::function<double(const Point<2> &)> &);
+    template double
+    smallest_cell_near(const Triangulation<3> &,
+                       const std::function<double(const Point<3> &)> &);
+  } // namespace Geometry
+} // namespace Common

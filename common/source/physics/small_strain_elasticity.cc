@@ -1,0 +1,194 @@
+#include <common/physics/small_strain_elasticity.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+
+namespace Common
+{
+  namespace Physics
+  {
+    using namespace dealii;
+
+    template <int dim>
+    SmallStrainElasticity<dim>::SmallStrainElasticity(
+      const Mapping<dim>                                         &mapping,
+      const FiniteElement<dim>                                   &fe,
+      const std::map<types::material_id, Materials::LinearElastic<dim>>
+        &materials)
+      : mapping(mapping)
+      , fe(fe)
+      , materials(materials)
+      , quadrature(fe.degree + 1)
+    {}
+
+
+
+    template <int dim>
+    const Materials::LinearElastic<dim> &
+    SmallStrainElasticity<dim>::material(const types::material_id id) const
+    {
+      const auto it = materials.find(id);
+      AssertThrow(it != materials.end(),
+                  ExcMessage("No material for material id " +
+                             std::to_string(id) + "."));
+      return it->second;
+    }
+
+
+
+    template <int dim>
+    void
+    SmallStrainElasticity<dim>::clear()
+    {
+      cell_matrices.clear();
+    }
+
+
+
+    template <int dim>
+    void
+    SmallStrainElasticity<dim>::compute_cell_matrices(
+      const DoFHandler<dim> &dof_handler)
+    {
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      cell_matrices.assign(dof_handler.get_triangulation().n_active_cells(),
+                           FullMatrix<double>());
+
+      FEValues<dim> fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+      const FEValuesExtractors::Vector       displacement(0);
+      std::vector<SymmetricTensor<2, dim>>   sym_grad(dofs_per_cell);
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            const auto &C = material(cell->material_id()).tangent();
+            FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
+            K.reinit(dofs_per_cell, dofs_per_cell);
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  sym_grad[i] =
+                    fe_values[displacement].symmetric_gradient(i, q);
+                const double JxW = fe_values.JxW(q);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    const SymmetricTensor<2, dim> C_eps_i = C * sym_grad[i];
+                    for (unsigned int j = 0; j <= i; ++j)
+                      K(i, j) += (C_eps_i * sym_grad[j]) * JxW;
+                  }
+              }
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+                K(i, j) = K(j, i);
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    SmallStrainElasticity<dim>::assemble_system(
+      const DoFHandler<dim>                 &dof_handler,
+      const AffineConstraints<double>       &constraints,
+      const TrilinosWrappers::MPI::Vector   &u,
+      TrilinosWrappers::SparseMatrix        &matrix,
+      TrilinosWrappers::MPI::Vector         &residual)
+    {
+      if (cell_matrices.size() !=
+          dof_handler.get_triangulation().n_active_cells())
+        compute_cell_matrices(dof_handler);
+
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+      Vector<double>                       u_cell(dofs_per_cell);
+      Vector<double>                       r_cell(dofs_per_cell);
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              u_cell(i) = u(dof_indices[i]);
+            const FullMatrix<double> &K =
+              cell_matrices[cell->active_cell_index()];
+            K.vmult(r_cell, u_cell);
+            r_cell *= -1.;
+            constraints.distribute_local_to_global(
+              K, r_cell, dof_indices, matrix, residual);
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    SmallStrainElasticity<dim>::assemble_internal_force(
+      const DoFHandler<dim>               &dof_handler,
+      const TrilinosWrappers::MPI::Vector &u,
+      TrilinosWrappers::MPI::Vector       &internal_force)
+    {
+      if (cell_matrices.size() !=
+          dof_handler.get_triangulation().n_active_cells())
+        compute_cell_matrices(dof_handler);
+
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+      Vector<double>                       u_cell(dofs_per_cell);
+      Vector<double>                       f_cell(dofs_per_cell);
+
+      internal_force = 0.;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              u_cell(i) = u(dof_indices[i]);
+            cell_matrices[cell->active_cell_index()].vmult(f_cell, u_cell);
+            internal_force.add(dof_indices, f_cell);
+          }
+      internal_force.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    StressPostprocessor<dim>::StressPostprocessor(
+      const SmallStrainElasticity<dim> &physics)
+      : DataPostprocessorTensor<dim>("stress", update_gradients)
+      , physics(physics)
+    {}
+
+
+
+    template <int dim>
+    void
+    StressPostprocessor<dim>::evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<Vector<double>>                &computed_quantities) const
+    {
+      const auto  cell = inputs.template get_cell<dim>();
+      const auto &law  = physics.material(cell->material_id());
+      for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+        {
+          Tensor<2, dim> grad;
+          for (unsigned int d = 0; d < dim; ++d)
+            grad[d] = inputs.solution_gradients[q][d];
+          const SymmetricTensor<2, dim> sigma = law.stress(symmetrize(grad));
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int e = 0; e < dim; ++e)
+              computed_quantities[q](
+                Tensor<2, dim>::component_to_unrolled_index(
+                  TableIndices<2>(d, e))) = sigma[d][e];
+        }
+    }
+
+    template class SmallStrainElasticity<2>;
+    template class SmallStrainElasticity<3>;
+    template class StressPostprocessor<2>;
+    template class StressPostprocessor<3>;
+  } // namespace Physics
+} // namespace Common

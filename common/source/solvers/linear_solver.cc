@@ -1,0 +1,210 @@
+#include <common/solvers/linear_solver.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+
+namespace Common
+{
+  namespace Solvers
+  {
+    using namespace dealii;
+
+    void
+    LinearSolverParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        prm.declare_entry("Solver type",
+                          "mumps",
+                          Patterns::Selection("umfpack|mumps|klu|cg amg"),
+                          "Linear solver: 'umfpack' (sparse direct, one MPI "
+                          "rank only), 'mumps' (parallel sparse direct), "
+                          "'klu' (sparse direct, gathered on one rank) or "
+                          "'cg amg' (conjugate gradients with algebraic "
+                          "multigrid, for large 3D cases).");
+        prm.declare_entry("Tolerance",
+                          "1e-12",
+                          Patterns::Double(0.),
+                          "Relative residual tolerance of 'cg amg'. "
+                          "Dimensionless.");
+        prm.declare_entry("Maximum iterations",
+                          "10000",
+                          Patterns::Integer(1),
+                          "Iteration limit of 'cg amg'.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolverParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        const std::string name = prm.get("Solver type");
+        type           = (name == "umfpack" ? LinearSolverType::umfpack :
+                          name == "mumps"   ? LinearSolverType::mumps :
+                          name == "klu"   ? LinearSolverType::klu :
+                                            LinearSolverType::cg_amg);
+        tolerance      = prm.get_double("Tolerance");
+        max_iterations = prm.get_integer("Maximum iterations");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    struct LinearSolver::DirectSolverData
+    {
+      const Epetra_CrsMatrix                *matrix = nullptr;
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    solver;
+    };
+
+
+
+    LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
+      : parameters(parameters)
+    {}
+
+
+
+    LinearSolver::~LinearSolver() = default;
+
+
+
+    void
+    LinearSolver::reset()
+    {
+      direct.reset();
+    }
+
+
+
+    unsigned int
+    LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b)
+    {
+      if (parameters.type != LinearSolverType::mumps &&
+          parameters.type != LinearSolverType::klu)
+        return solve_linear_system(parameters, A, x, b);
+
+      // Amesos keeps the symbolic factorisation of the matrix object; a
+      // new object (or reset()) starts over.
+      if (!direct || direct->matrix != &A.trilinos_matrix())
+        {
+          direct         = std::make_unique<DirectSolverData>();
+          direct->matrix = &A.trilinos_matrix();
+          direct->problem = std::make_unique<Epetra_LinearProblem>();
+          direct->problem->SetOperator(
+            const_cast<Epetra_CrsMatrix *>(direct->matrix));
+          Amesos factory;
+          direct->solver.reset(factory.Create(
+            parameters.type == LinearSolverType::mumps ? "Amesos_Mumps" :
+                                                         "Amesos_Klu",
+            *direct->problem));
+          AssertThrow(direct->solver != nullptr,
+                      ExcMessage("The requested direct solver is not "
+                                 "available in this Trilinos."));
+          AssertThrow(direct->solver->SymbolicFactorization() == 0,
+                      ExcMessage("Symbolic factorisation failed."));
+        }
+      direct->problem->SetLHS(&x.trilinos_vector());
+      direct->problem->SetRHS(
+        const_cast<Epetra_MultiVector *>(
+          static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+      AssertThrow(direct->solver->NumericFactorization() == 0,
+                  ExcMessage("Numeric factorisation failed: the linear "
+                             "system is singular."));
+      AssertThrow(direct->solver->Solve() == 0,
+                  ExcMessage("The direct solver failed."));
+      return 1;
+    }
+
+
+
+    unsigned int
+    solve_linear_system(const LinearSolverParameters        &parameters,
+                        const TrilinosWrappers::SparseMatrix &A,
+                        TrilinosWrappers::MPI::Vector       &x,
+                        const TrilinosWrappers::MPI::Vector &b)
+    {
+      if (parameters.type == LinearSolverType::cg_amg)
+        {
+          SolverControl control(parameters.max_iterations,
+                                parameters.tolerance * b.l2_norm());
+          TrilinosWrappers::PreconditionAMG                 amg;
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          data.elliptic              = true;
+          data.higher_order_elements = true;
+          amg.initialize(A, data);
+          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+          cg.solve(A, x, b, amg);
+          return control.last_step();
+        }
+
+      if (parameters.type == LinearSolverType::umfpack)
+        {
+          AssertThrow(Utilities::MPI::n_mpi_processes(
+                        A.get_mpi_communicator()) == 1,
+                      ExcMessage("Linear solver 'umfpack' runs on one MPI "
+                                 "rank only; use 'mumps' in parallel."));
+          // Copy into deal.II's own sparse format, which UMFPACK reads.
+          const auto            &epetra = A.trilinos_matrix();
+          DynamicSparsityPattern dsp(A.m(), A.n());
+          for (int row = 0; row < epetra.NumMyRows(); ++row)
+            {
+              int     n_entries;
+              double *values;
+              int    *columns;
+              epetra.ExtractMyRowView(row, n_entries, values, columns);
+              for (int k = 0; k < n_entries; ++k)
+                dsp.add(epetra.GRID(row), epetra.GCID(columns[k]));
+            }
+          SparsityPattern pattern;
+          pattern.copy_from(dsp);
+          SparseMatrix<double> matrix(pattern);
+          for (int row = 0; row < epetra.NumMyRows(); ++row)
+            {
+              int     n_entries;
+              double *values;
+              int    *columns;
+              epetra.ExtractMyRowView(row, n_entries, values, columns);
+              for (int k = 0; k < n_entries; ++k)
+                matrix.set(epetra.GRID(row), epetra.GCID(columns[k]), values[k]);
+            }
+          SparseDirectUMFPACK umfpack;
+          umfpack.initialize(matrix);
+          Vector<double> rhs(b.size()), x_serial(b.size());
+          for (const auto i : b.locally_owned_elements())
+            rhs(i) = b(i);
+          umfpack.vmult(x_serial, rhs);
+          for (const auto i : x.locally_owned_elements())
+            x(i) = x_serial(i);
+          x.compress(VectorOperation::insert);
+          return 1;
+        }
+
+      SolverControl                               control(1, 0);
+      TrilinosWrappers::SolverDirect::AdditionalData data(
+        false,
+        parameters.type == LinearSolverType::mumps ? "Amesos_Mumps" :
+                                                     "Amesos_Klu");
+      TrilinosWrappers::SolverDirect solver(control, data);
+      solver.solve(A, x, b);
+      return 1;
+    }
+  } // namespace Solvers
+} // namespace Common

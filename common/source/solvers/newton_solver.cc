@@ -1,0 +1,94 @@
+#include <common/io/console.h>
+#include <common/solvers/newton_solver.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace Common
+{
+  namespace Solvers
+  {
+    using namespace dealii;
+
+    void
+    NonlinearSolverParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      {
+        prm.declare_entry("Maximum number of iterations",
+                          "25",
+                          Patterns::Integer(1),
+                          "Semismooth Newton iterations per load step before "
+                          "the step is cut back.");
+        prm.declare_entry("Tolerance",
+                          "1e-10",
+                          Patterns::Double(0.),
+                          "Convergence tolerance on the equilibrium and "
+                          "complementarity residuals, relative to the "
+                          "external load. Dimensionless.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    NonlinearSolverParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      {
+        max_iterations = prm.get_integer("Maximum number of iterations");
+        tolerance      = prm.get_double("Tolerance");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    NewtonStatistics
+    solve_newton(const NonlinearSolverParameters &parameters,
+                 const NewtonCallbacks           &callbacks,
+                 ConditionalOStream              &verbose)
+    {
+      NewtonStatistics statistics;
+      for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
+        {
+          callbacks.assemble_solve_and_update();
+          const NewtonResidual residual  = callbacks.evaluate_residual();
+          const unsigned int   n_changed = callbacks.update_active_set();
+          statistics.n_iterations        = it;
+          statistics.residuals.push_back(residual);
+          statistics.active_set_changes.push_back(n_changed);
+
+          verbose << "    Newton " << std::setw(2) << it
+                  << ": equilibrium residual "
+                  << IO::Console::format(residual.equilibrium)
+                  << ", complementarity residual "
+                  << IO::Console::format(residual.complementarity)
+                  << ", active set changes " << n_changed << std::endl;
+
+          if (!std::isfinite(residual.equilibrium) ||
+              !std::isfinite(residual.complementarity))
+            {
+              statistics.failure = "non-finite residual";
+              return statistics;
+            }
+          if (n_changed == 0 && residual.equilibrium < parameters.tolerance &&
+              residual.complementarity < parameters.tolerance)
+            {
+              statistics.converged = true;
+              return statistics;
+            }
+          if (callbacks.is_cycling())
+            {
+              statistics.failure = "the active set cycles";
+              return statistics;
+            }
+        }
+      statistics.failure = "no convergence in " +
+                           std::to_string(parameters.max_iterations) +
+                           " iterations";
+      return statistics;
+    }
+  } // namespace Solvers
+} // namespace Common
