@@ -2,10 +2,10 @@
  * cgs_roller: benchmark 1 of the FENET/NAFEMS advanced contact benchmarks,
  * a 2D elastic cylinder pressed onto an elastic block (Hertz line contact).
  */
+#include <common/io/run_main.h>
+
 #include "parameters.h"
 #include "roller_problem.h"
-
-#include <common/io/run_main.h>
 
 int
 main(int argc, char *argv[])
@@ -18,7 +18,7 @@ main(int argc, char *argv[])
     "Hertz line contact)",
     &CgsRoller::Parameters::declare_parameters,
     [](const std::string &parameter_file) {
-      const CgsRoller::Parameters   parameters(parameter_file);
+      const CgsRoller::Parameters parameters(parameter_file);
       CgsRoller::RollerProblem<2> problem(parameters);
       problem.run();
     });

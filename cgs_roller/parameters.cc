@@ -177,9 +177,11 @@ namespace CgsRoller
     MeshParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
     Common::Materials::LinearElasticParameters::declare_parameters(
-      prm, "Roller material");
+      prm,
+      "Roller material");
     Common::Materials::LinearElasticParameters::declare_parameters(
-      prm, "Block material");
+      prm,
+      "Block material");
     Common::Contact::ContactParameters::declare_parameters(prm);
     Common::Solvers::NonlinearSolverParameters::declare_parameters(prm);
     Common::Solvers::LinearSolverParameters::declare_parameters(prm);

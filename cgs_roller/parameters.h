@@ -93,9 +93,9 @@ namespace CgsRoller
     static void
     declare_parameters(ParameterHandler &prm);
 
-    GeometryParameters                       geometry;
-    MeshParameters                           mesh;
-    LoadingParameters                        loading;
+    GeometryParameters                         geometry;
+    MeshParameters                             mesh;
+    LoadingParameters                          loading;
     Common::Materials::LinearElasticParameters roller_material;
     Common::Materials::LinearElasticParameters block_material;
     Common::Contact::ContactParameters         contact;

@@ -14,18 +14,13 @@
 #include <common/solvers/linear_solver.h>
 
 #include <deal.II/base/function.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <chrono>
@@ -78,9 +73,9 @@ namespace CgsRoller
   void
   RollerProblem<dim>::make_grid()
   {
-    const double R = parameters.geometry.roller_radius;
-    const double W = parameters.geometry.block_half_width;
-    const double H = parameters.geometry.block_height;
+    const double     R = parameters.geometry.roller_radius;
+    const double     W = parameters.geometry.block_half_width;
+    const double     H = parameters.geometry.block_height;
     const Point<dim> centre(0., H + R);
 
     Triangulation<dim> block;
@@ -122,8 +117,8 @@ namespace CgsRoller
                 cell->face(f)->set_boundary_id(
                   std::abs(c[1]) < tolerance     ? BoundaryIds::block_bottom :
                   std::abs(c[1] - H) < tolerance ? BoundaryIds::block_top :
-                  std::abs(c[0]) < tolerance ? BoundaryIds::block_symmetry :
-                                               BoundaryIds::block_side);
+                  std::abs(c[0]) < tolerance     ? BoundaryIds::block_symmetry :
+                                                   BoundaryIds::block_side);
               else if (std::abs(c[0]) < tolerance)
                 cell->face(f)->set_boundary_id(BoundaryIds::roller_symmetry);
               else
@@ -166,13 +161,15 @@ namespace CgsRoller
     constraints_dirichlet_and_hanging_nodes.clear();
     constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(
-      dof_handler, constraints_dirichlet_and_hanging_nodes);
+      dof_handler,
+      constraints_dirichlet_and_hanging_nodes);
     const FEValuesExtractors::Scalar x_displacement(0);
-    VectorTools::interpolate_boundary_values(mapping,
-                                             dof_handler,
-                                             BoundaryIds::block_bottom,
-                                             Functions::ZeroFunction<dim>(dim),
-                                             constraints_dirichlet_and_hanging_nodes);
+    VectorTools::interpolate_boundary_values(
+      mapping,
+      dof_handler,
+      BoundaryIds::block_bottom,
+      Functions::ZeroFunction<dim>(dim),
+      constraints_dirichlet_and_hanging_nodes);
     for (const auto id :
          {BoundaryIds::block_symmetry, BoundaryIds::roller_symmetry})
       VectorTools::interpolate_boundary_values(
@@ -185,8 +182,9 @@ namespace CgsRoller
     constraints_dirichlet_and_hanging_nodes.close();
 
     // The point load acts on the vertical DoF of the roller's top vertex.
-    const Point<dim> top(0., parameters.geometry.block_height +
-                               2. * parameters.geometry.roller_radius);
+    const Point<dim> top(0.,
+                         parameters.geometry.block_height +
+                           2. * parameters.geometry.roller_radius);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex(v).distance(top) <
@@ -203,10 +201,14 @@ namespace CgsRoller
     materials.emplace(MaterialIds::block,
                       Common::Materials::LinearElastic<dim>(
                         parameters.block_material));
-    physics = std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
-      mapping, fe, materials);
+    physics =
+      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(mapping,
+                                                                    fe,
+                                                                    materials);
 
-    solution.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
     solution_owned.reinit(locally_owned_dofs, mpi_communicator);
     accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
     newton_update.reinit(locally_owned_dofs, mpi_communicator);
@@ -226,18 +228,24 @@ namespace CgsRoller
   RollerProblem<dim>::setup_contact()
   {
     const auto start = std::chrono::steady_clock::now();
-    secondary = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler, mapping, parameters.contact.secondary_boundary_id);
+    secondary        = std::make_unique<Common::Contact::ContactSurface<dim>>(
+      dof_handler,
+      mapping,
+      parameters.contact.secondary_boundary_id);
     primary = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler, mapping, parameters.contact.primary_boundary_id);
-    search = std::make_unique<Common::Contact::ContactSearch<dim>>(*primary,
-                                                                   0.);
+      dof_handler,
+      mapping,
+      parameters.contact.primary_boundary_id);
+    search =
+      std::make_unique<Common::Contact::ContactSearch<dim>>(*primary, 0.);
     coupling.reinit(*secondary,
                     *primary,
                     *search,
                     parameters.contact.search_distance);
     enforcement = std::make_unique<Common::Contact::ContactEnforcement<dim>>(
-      parameters.contact, coupling, parameters.block_material.youngs_modulus);
+      parameters.contact,
+      coupling,
+      parameters.block_material.youngs_modulus);
     enforcement->initialize_active_set();
     contact_setup_time = seconds_since(start);
   }
@@ -290,27 +298,32 @@ namespace CgsRoller
 
     system_matrix = 0.;
     system_rhs    = 0.;
-    physics->assemble_system(
-      dof_handler, constraints, solution, system_matrix, system_rhs);
+    physics->assemble_system(dof_handler,
+                             constraints,
+                             solution,
+                             system_matrix,
+                             system_rhs);
     if (locally_owned_dofs.is_element(load_dof))
       {
         Vector<double> load(1);
         load(0) = -0.5 * load_factor * parameters.loading.force_per_thickness;
-        constraints.distribute_local_to_global(load,
-                                               std::vector<
-                                                 types::global_dof_index>{
-                                                 load_dof},
-                                               system_rhs);
+        constraints.distribute_local_to_global(
+          load,
+          std::vector<types::global_dof_index>{load_dof},
+          system_rhs);
       }
     if (parameters.contact.enforcement == Common::Contact::Enforcement::penalty)
-      enforcement->assemble_penalty(
-        constraints, solution, locally_owned_dofs, system_matrix, system_rhs);
+      enforcement->assemble_penalty(constraints,
+                                    solution,
+                                    locally_owned_dofs,
+                                    system_matrix,
+                                    system_rhs);
     system_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
 
     assembly_time += seconds_since(t_assemble);
     const auto t_solve = std::chrono::steady_clock::now();
-    newton_update = 0.;
+    newton_update      = 0.;
     linear_solver.solve(system_matrix, newton_update, system_rhs);
     constraints.distribute(newton_update);
     linear_solve_time += seconds_since(t_solve);
@@ -331,17 +344,20 @@ namespace CgsRoller
     const double applied =
       0.5 * load_factor * parameters.loading.force_per_thickness;
 
+    // Residual of the free DoFs, f_ext - f_int, condensed as the linear
+    // system is: hanging-node forces on their parents (a secondary node may
+    // be one), Dirichlet rows zero (reactions at the symmetry lines are no
+    // contact tractions).
     TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
-    physics->assemble_internal_force(dof_handler, solution, r);
+    physics->assemble_internal_force(dof_handler,
+                                     constraints_dirichlet_and_hanging_nodes,
+                                     solution,
+                                     r);
+    r.compress(VectorOperation::add);
     r *= -1.;
+    // The loaded vertex is neither constrained nor hanging.
     if (locally_owned_dofs.is_element(load_dof))
       r(load_dof) -= applied;
-    r.compress(VectorOperation::add);
-    // Residual of the free DoFs: hanging nodes condensed onto their
-    // parents (a secondary node may be one), Dirichlet rows dropped, since
-    // reactions at the symmetry lines are no contact tractions.
-    constraints_dirichlet_and_hanging_nodes.condense(r);
-    constraints_dirichlet_and_hanging_nodes.set_zero(r);
     bulk_residual = r;
 
     enforcement->update_pressures(solution, bulk_residual);
@@ -377,15 +393,19 @@ namespace CgsRoller
       active_set_time += seconds_since(start);
       return n_changed;
     };
-    callbacks.is_cycling = [&]() { return enforcement->is_cycling(); };
+    callbacks.is_cycling = [&]() {
+      return enforcement->is_cycling();
+    };
 
     Common::Solvers::NonlinearSolverParameters newton =
       parameters.nonlinear_solver;
     newton.max_iterations =
       std::min(newton.max_iterations,
                parameters.contact.max_active_set_iterations);
-    return Common::Solvers::solve_newton(
-      newton, callbacks, console.stream(Common::IO::Verbosity::verbose));
+    return Common::Solvers::solve_newton(newton,
+                                         callbacks,
+                                         console.stream(
+                                           Common::IO::Verbosity::verbose));
   }
 
 
@@ -405,8 +425,11 @@ namespace CgsRoller
       parameters.geometry.roller_radius,
       load_factor * parameters.loading.force_per_thickness);
 
-    const auto profile = Common::Contact::contact_profile(
-      coupling, *enforcement, solution, bulk_residual, 0);
+    const auto   profile = Common::Contact::contact_profile(coupling,
+                                                          *enforcement,
+                                                          solution,
+                                                          bulk_residual,
+                                                          0);
     const double force =
       Common::Contact::total_contact_force(coupling, *enforcement)[1];
     const double applied =
@@ -421,8 +444,11 @@ namespace CgsRoller
                      << ": Newton iterations " << statistics.n_iterations
                      << ", active contact nodes " << enforcement->n_active()
                      << std::endl;
-    console.print_quantity(
-      "Contact force, half model", "N/mm", -force, "F/F_applied", -force / applied);
+    console.print_quantity("Contact force, half model",
+                           "N/mm",
+                           -force,
+                           "F/F_applied",
+                           -force / applied);
     console.print_quantity("Contact half-width a",
                            "mm",
                            half_width,
@@ -466,9 +492,8 @@ namespace CgsRoller
   RollerProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
-    const auto &out = parameters.output;
-    const bool  root =
-      Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const auto &out  = parameters.output;
+    const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
 
     const Common::Analytic::HertzLineContact hertz(
       parameters.roller_material.youngs_modulus,
@@ -478,15 +503,18 @@ namespace CgsRoller
       parameters.geometry.roller_radius,
       parameters.loading.force_per_thickness);
 
-    const auto profile = Common::Contact::contact_profile(
-      coupling, *enforcement, solution, bulk_residual, 0);
-    double peak = 0.;
+    const auto profile = Common::Contact::contact_profile(coupling,
+                                                          *enforcement,
+                                                          solution,
+                                                          bulk_residual,
+                                                          0);
+    double     peak    = 0.;
     for (const auto &p : profile)
       peak = std::max(peak, p.pressure);
     const double half_width = Common::Contact::contact_extent(profile, 0);
     const double force =
       -Common::Contact::total_contact_force(coupling, *enforcement)[1];
-    const double applied = 0.5 * parameters.loading.force_per_thickness;
+    const double applied        = 0.5 * parameters.loading.force_per_thickness;
     double       reference_norm = 0.;
     const double l2_error       = Common::Contact::pressure_l2_error<dim>(
       coupling,
@@ -525,15 +553,14 @@ namespace CgsRoller
         plot.title   = "Contact pressure, cylinder on block (benchmark 1)";
         plot.x_label = "x, distance from the contact centre [mm]";
         plot.y_label = "contact pressure [MPa]";
-        plot.x_range =
-          "[0:" + std::to_string(1.5 * hertz.half_width()) + "]";
-        plot.series = {{"reference_profile.csv", 1, 2, "Hertz", "lines lw 2"},
-                       {"contact_profile.csv",
-                        1,
-                        2,
-                        "FE, Q" +
-                          std::to_string(parameters.mesh.element_degree),
-                        "linespoints pt 7 ps 0.7"}};
+        plot.x_range = "[0:" + std::to_string(1.5 * hertz.half_width()) + "]";
+        plot.series  = {{"reference_profile.csv", 1, 2, "Hertz", "lines lw 2"},
+                        {"contact_profile.csv",
+                         1,
+                         2,
+                         "FE, Q" +
+                           std::to_string(parameters.mesh.element_degree),
+                         "linespoints pt 7 ps 0.7"}};
         if (!Common::IO::write_plot(out.directory, "contact_pressure", plot))
           console.stream() << "  Note: gnuplot not available; plot script "
                               "contact_pressure.gp written without PNG."
@@ -554,10 +581,8 @@ namespace CgsRoller
              "lagrange multiplier")
       .set("friction_coefficient", 0.)
       .set("n_load_steps", parameters.load_stepping.n_steps)
-      .set("n_mpi_ranks",
-           Utilities::MPI::n_mpi_processes(mpi_communicator));
-    if (parameters.contact.enforcement ==
-        Common::Contact::Enforcement::penalty)
+      .set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(mpi_communicator));
+    if (parameters.contact.enforcement == Common::Contact::Enforcement::penalty)
       case_description.set("penalty_stiffness_MPa_per_mm",
                            parameters.contact.penalty_stiffness);
 
@@ -660,7 +685,7 @@ namespace CgsRoller
         used << parameters.used_parameters;
       }
 
-    Common::IO::SolutionOutput<dim> solution_output(out,
+    Common::IO::SolutionOutput<dim>                 solution_output(out,
                                                     "solution",
                                                     mpi_communicator);
     const Common::Physics::StressPostprocessor<dim> stress(*physics);
@@ -684,8 +709,13 @@ namespace CgsRoller
           for (unsigned int j = 0; j < coupling.n_rows(); ++j)
             pressure.values[secondary->node(j).dofs[0]] =
               enforcement->pressure(j);
-          solution_output.write(
-            dof_handler, mapping, solution, {&stress}, {pressure}, load, step);
+          solution_output.write(dof_handler,
+                                mapping,
+                                solution,
+                                {&stress},
+                                {pressure},
+                                load,
+                                step);
         }
     };
     callbacks.reject = [&]() {
@@ -695,8 +725,10 @@ namespace CgsRoller
     };
 
     const auto solve_start = std::chrono::steady_clock::now();
-    const auto stepping    = Common::Solvers::run_load_stepping(
-      parameters.load_stepping, callbacks, console);
+    const auto stepping =
+      Common::Solvers::run_load_stepping(parameters.load_stepping,
+                                         callbacks,
+                                         console);
     contact_solve_time += contact_setup_time;
     timings.set("contact_setup_s", contact_setup_time)
       .set("contact_solve_s", contact_solve_time)

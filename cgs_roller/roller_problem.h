@@ -20,14 +20,10 @@
 #include "parameters.h"
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/distributed/shared_tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -95,9 +91,9 @@ namespace CgsRoller
     output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
 
     // Run set-up
-    const Parameters     &parameters;
-    MPI_Comm              mpi_communicator;
-    Common::IO::Console   console;
+    const Parameters   &parameters;
+    MPI_Comm            mpi_communicator;
+    Common::IO::Console console;
 
     // Discretisation
     parallel::shared::Triangulation<dim> triangulation;
@@ -117,7 +113,6 @@ namespace CgsRoller
     std::unique_ptr<Common::Contact::ContactEnforcement<dim>> enforcement;
 
     // Linear algebra
-    Common::Solvers::LinearSolver  linear_solver;
     AffineConstraints<double>      constraints_dirichlet_and_hanging_nodes;
     AffineConstraints<double>      constraints;
     TrilinosWrappers::SparseMatrix system_matrix;
@@ -127,16 +122,18 @@ namespace CgsRoller
     TrilinosWrappers::MPI::Vector  newton_update;
     TrilinosWrappers::MPI::Vector  system_rhs;
     TrilinosWrappers::MPI::Vector  bulk_residual;
+    // Declared after the matrix: it refers to it and goes first.
+    Common::Solvers::LinearSolver linear_solver;
 
     // Results
-    std::vector<unsigned int>  iterations_per_step;
-    Common::IO::JsonObject     timings;
-    double                     contact_setup_time;
-    double                     contact_solve_time;
-    double                     assembly_time;
-    double                     linear_solve_time;
-    double                     residual_time;
-    double                     active_set_time;
+    std::vector<unsigned int> iterations_per_step;
+    Common::IO::JsonObject    timings;
+    double                    contact_setup_time;
+    double                    contact_solve_time;
+    double                    assembly_time;
+    double                    linear_solve_time;
+    double                    residual_time;
+    double                    active_set_time;
   };
 } // namespace CgsRoller
 

@@ -19,14 +19,13 @@ namespace Common
       , youngs_modulus_2(youngs_modulus_2)
       , poisson_ratio_2(poisson_ratio_2)
     {
-      AssertThrow(youngs_modulus_1 > 0 && youngs_modulus_2 > 0 &&
-                    radius > 0 && force_per_length >= 0,
+      AssertThrow(youngs_modulus_1 > 0 && youngs_modulus_2 > 0 && radius > 0 &&
+                    force_per_length >= 0,
                   dealii::ExcMessage("Hertz: moduli, radius and force must "
                                      "be positive."));
-      e_star = 1. / ((1. - poisson_ratio_1 * poisson_ratio_1) /
-                       youngs_modulus_1 +
-                     (1. - poisson_ratio_2 * poisson_ratio_2) /
-                       youngs_modulus_2);
+      e_star =
+        1. / ((1. - poisson_ratio_1 * poisson_ratio_1) / youngs_modulus_1 +
+              (1. - poisson_ratio_2 * poisson_ratio_2) / youngs_modulus_2);
       a  = std::sqrt(4. * force_per_length * radius / (M_PI * e_star));
       p0 = (a > 0. ? 2. * force_per_length / (M_PI * a) : 0.);
     }

@@ -27,9 +27,8 @@ namespace Common
                    std::vector<types::global_dof_index> &dofs,
                    Vector<double>                       &B)
       {
-        const MortarRow<dim> &row = coupling.row(j);
-        const auto           &secondary_node =
-          coupling.secondary_surface().node(j);
+        const MortarRow<dim> &row  = coupling.row(j);
+        const auto &secondary_node = coupling.secondary_surface().node(j);
         dofs.clear();
         std::vector<double> values;
         for (unsigned int c = 0; c < dim; ++c)
@@ -87,8 +86,7 @@ namespace Common
           const MortarRow<dim> &row = coupling.row(j);
           // The weighted gap averages over the node's support and is not
           // zero at a touching node; the pointwise gap is, up to round-off.
-          active[j] =
-            row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
+          active[j] = row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
         }
       std::fill(pressures.begin(), pressures.end(), 0.);
       commit();
@@ -171,8 +169,9 @@ namespace Common
                 const types::global_dof_index i = closure[n];
                 if (const auto *entries = constraints.get_constraint_entries(i))
                   for (const auto &entry : *entries)
-                    if (std::find(closure.begin(), closure.end(), entry.first) ==
-                        closure.end())
+                    if (std::find(closure.begin(),
+                                  closure.end(),
+                                  entry.first) == closure.end())
                       closure.push_back(entry.first);
                 const auto it = partners.find(i);
                 if (it != partners.end())
@@ -229,9 +228,8 @@ namespace Common
           for (const auto &[k, M] : row.primary_weights)
             for (unsigned int e = 0; e < dim; ++e)
               if (std::abs(M * row.normal[e]) > 1e-14 * row.weight)
-                entries.emplace_back(
-                  coupling.primary_surface().node(k).dofs[e],
-                  M * row.normal[e] * scale);
+                entries.emplace_back(coupling.primary_surface().node(k).dofs[e],
+                                     M * row.normal[e] * scale);
           constraints.add_line(node.dofs[c]);
           constraints.add_entries(node.dofs[c], entries);
           constraints.set_inhomogeneity(node.dofs[c],
@@ -257,15 +255,16 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          if (!active[j] ||
-              !locally_owned.is_element(
-                coupling.secondary_surface().node(j).dofs[0]))
+          if (!active[j] || !locally_owned.is_element(
+                              coupling.secondary_surface().node(j).dofs[0]))
             continue;
           const double gap = coupling.weighted_gap(j, u) / row.weight;
-          const double p   = NormalContactLaw::penalty_pressure(
-            gap, parameters.penalty_stiffness);
-          const double dp_dgap = NormalContactLaw::penalty_derivative(
-            gap, parameters.penalty_stiffness);
+          const double p =
+            NormalContactLaw::penalty_pressure(gap,
+                                               parameters.penalty_stiffness);
+          const double dp_dgap =
+            NormalContactLaw::penalty_derivative(gap,
+                                                 parameters.penalty_stiffness);
 
           gap_gradient(coupling, j, dofs, B);
           K.reinit(dofs.size(), dofs.size());
@@ -297,9 +296,10 @@ namespace Common
               continue;
             }
           if (parameters.enforcement == Enforcement::penalty)
-            pressures[j] = NormalContactLaw::penalty_pressure(
-              coupling.weighted_gap(j, u) / row.weight,
-              parameters.penalty_stiffness);
+            pressures[j] =
+              NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
+                                                   row.weight,
+                                                 parameters.penalty_stiffness);
           else
             {
               const auto &node = coupling.secondary_surface().node(j);
@@ -349,7 +349,8 @@ namespace Common
           next[j] =
             (parameters.enforcement == Enforcement::penalty ?
                NormalContactLaw::penalty_derivative(
-                 gap, parameters.penalty_stiffness) != 0. :
+                 gap,
+                 parameters.penalty_stiffness) != 0. :
                NormalContactLaw::is_active(pressures[j], gap, ncp_constant(j)));
           n_closed += (next[j] && !active[j]);
           n_opened += (!next[j] && active[j]);
@@ -361,7 +362,7 @@ namespace Common
 
       if (extrapolation_enabled && n_closed == 0 && n_opened > 0)
         {
-          const auto &surface = coupling.secondary_surface();
+          const auto               &surface = coupling.secondary_surface();
           std::vector<unsigned int> opened, kept;
           for (unsigned int j = 0; j < n; ++j)
             if (active[j] && !next[j])
@@ -374,8 +375,8 @@ namespace Common
           for (unsigned int r = 0; r < opened.size(); ++r)
             for (const unsigned int j : kept)
               band[r] = std::min(band[r],
-                                 surface.node(opened[r])
-                                   .position.distance(surface.node(j).position));
+                                 surface.node(opened[r]).position.distance(
+                                   surface.node(j).position));
           std::vector<unsigned int> also_opened;
           for (const unsigned int j : kept)
             for (unsigned int r = 0; r < opened.size(); ++r)
@@ -395,16 +396,49 @@ namespace Common
             }
         }
 
+      // A set seen before in this step means ping-pong (typically a corner
+      // and a mid-side node of a Q2 face trading places at the contact
+      // edge). Then change only the point with the largest complementarity
+      // violation whose change leads to a set not seen yet.
+      const auto seen = [this](const std::vector<bool> &set) {
+        return std::find(history.begin(), history.end(), set) != history.end();
+      };
+      cycling = false;
+      if (next != active && seen(next))
+        {
+          extrapolation_enabled = false;
+          std::vector<std::pair<double, unsigned int>> violations;
+          for (unsigned int j = 0; j < n; ++j)
+            if (next[j] != active[j])
+              {
+                const MortarRow<dim> &row = coupling.row(j);
+                violations.emplace_back(
+                  std::abs(NormalContactLaw::complementarity(
+                    pressures[j],
+                    coupling.weighted_gap(j, u) / row.weight,
+                    ncp_constant(j))) *
+                    row.weight,
+                  j);
+              }
+          std::sort(violations.rbegin(), violations.rend());
+          cycling = true;
+          for (const auto &[violation, j] : violations)
+            {
+              std::vector<bool> single = active;
+              single[j]                = !single[j];
+              if (!seen(single))
+                {
+                  next    = single;
+                  cycling = false;
+                  break;
+                }
+            }
+        }
+
       unsigned int n_changed = 0;
       for (unsigned int j = 0; j < n; ++j)
         n_changed += (next[j] != active[j]);
       active = next;
-
-      cycling = false;
-      if (n_changed > 0)
-        for (unsigned int i = 0; i + 1 < history.size(); ++i)
-          if (history[i] == active)
-            cycling = true;
       history.push_back(active);
       return n_changed;
     }
@@ -432,10 +466,11 @@ namespace Common
           const MortarRow<dim> &row = coupling.row(j);
           if (!row.has_partner)
             continue;
-          const double C = NormalContactLaw::complementarity(
-            pressures[j],
-            coupling.weighted_gap(j, u) / row.weight,
-            ncp_constant(j));
+          const double C =
+            NormalContactLaw::complementarity(pressures[j],
+                                              coupling.weighted_gap(j, u) /
+                                                row.weight,
+                                              ncp_constant(j));
           sum += std::pow(C * row.weight, 2);
         }
       return std::sqrt(sum);

@@ -83,15 +83,15 @@ namespace Common
       {
         primary_boundary_id   = prm.get_integer("Primary boundary id");
         secondary_boundary_id = prm.get_integer("Secondary boundary id");
-        enforcement = (prm.get("Enforcement") == "penalty" ?
-                         Enforcement::penalty :
-                         Enforcement::lagrange_multiplier);
-        friction_law              = FrictionLaw::frictionless;
-        penalty_stiffness         = prm.get_double("Penalty stiffness");
-        ncp_factor                = prm.get_double("NCP constant factor");
-        search_distance           = prm.get_double("Search distance");
-        max_active_set_iterations = prm.get_integer(
-          "Maximum active set iterations");
+        enforcement           = (prm.get("Enforcement") == "penalty" ?
+                                   Enforcement::penalty :
+                                   Enforcement::lagrange_multiplier);
+        friction_law          = FrictionLaw::frictionless;
+        penalty_stiffness     = prm.get_double("Penalty stiffness");
+        ncp_factor            = prm.get_double("NCP constant factor");
+        search_distance       = prm.get_double("Search distance");
+        max_active_set_iterations =
+          prm.get_integer("Maximum active set iterations");
         accelerate_release = prm.get_bool("Accelerate active set release");
       }
       prm.leave_subsection();

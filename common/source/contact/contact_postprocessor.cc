@@ -128,10 +128,11 @@ namespace Common
 
     template <int dim>
     double
-    pressure_l2_error(const MortarCoupling<dim>                    &coupling,
-                      const ContactEnforcement<dim>                &enforcement,
-                      const std::function<double(const Point<dim> &)> &reference,
-                      double &reference_norm)
+    pressure_l2_error(
+      const MortarCoupling<dim>                       &coupling,
+      const ContactEnforcement<dim>                   &enforcement,
+      const std::function<double(const Point<dim> &)> &reference,
+      double                                          &reference_norm)
     {
       const auto           &surface = coupling.secondary_surface();
       const QGauss<dim - 1> quadrature(surface.base_element().degree + 4);
@@ -185,25 +186,27 @@ namespace Common
         }
     }
 
-#define INSTANTIATE(dim)                                                     \
-  template std::vector<ContactPointResult<dim>> contact_profile(            \
-    const MortarCoupling<dim> &,                                            \
-    const ContactEnforcement<dim> &,                                        \
-    const TrilinosWrappers::MPI::Vector &,                                  \
-    const TrilinosWrappers::MPI::Vector &,                                  \
-    const unsigned int);                                                    \
-  template Tensor<1, dim> total_contact_force(const MortarCoupling<dim> &,  \
-                                              const ContactEnforcement<dim> &); \
+#define INSTANTIATE(dim)                                                       \
+  template std::vector<ContactPointResult<dim>> contact_profile(               \
+    const MortarCoupling<dim> &,                                               \
+    const ContactEnforcement<dim> &,                                           \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const unsigned int);                                                       \
+  template Tensor<1, dim> total_contact_force(                                 \
+    const MortarCoupling<dim> &,                                               \
+    const ContactEnforcement<dim> &);                                          \
   template double contact_extent(const std::vector<ContactPointResult<dim>> &, \
-                                 const unsigned int);                       \
-  template double pressure_l2_error(                                        \
-    const MortarCoupling<dim> &,                                            \
-    const ContactEnforcement<dim> &,                                        \
-    const std::function<double(const Point<dim> &)> &,                      \
-    double &);                                                              \
-  template void write_profile_csv(const std::string &,                      \
-                                  const std::vector<ContactPointResult<dim>> &, \
-                                  const unsigned int);
+                                 const unsigned int);                          \
+  template double pressure_l2_error(                                           \
+    const MortarCoupling<dim> &,                                               \
+    const ContactEnforcement<dim> &,                                           \
+    const std::function<double(const Point<dim> &)> &,                         \
+    double &);                                                                 \
+  template void write_profile_csv(                                             \
+    const std::string &,                                                       \
+    const std::vector<ContactPointResult<dim>> &,                              \
+    const unsigned int);
     INSTANTIATE(2)
     INSTANTIATE(3)
 #undef INSTANTIATE

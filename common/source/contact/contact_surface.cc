@@ -1,13 +1,10 @@
 #include <common/contact/contact_surface.h>
 
-#include <deal.II/base/quadrature.h>
 #include <deal.II/base/qprojector.h>
+#include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe.h>
-
 #include <deal.II/grid/reference_cell.h>
-
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -47,7 +44,9 @@ namespace Common
         for (unsigned int f = 0; f < faces_per_cell; ++f)
           {
             const Quadrature<dim> projected = QProjector<dim>::project_to_face(
-              ReferenceCells::get_hypercube<dim>(), q, f);
+              ReferenceCells::get_hypercube<dim>(),
+              q,
+              f);
             face_origin[f] = projected.point(0);
             for (unsigned int k = 0; k < dim - 1; ++k)
               face_axes[f][k] = projected.point(k + 1) - projected.point(0);
@@ -56,7 +55,7 @@ namespace Common
 
       const std::vector<Point<dim>> &unit_points = fe.get_unit_support_points();
       std::map<types::global_dof_index, unsigned int> node_of_dof;
-      std::vector<types::global_dof_index> dof_indices(
+      std::vector<types::global_dof_index>            dof_indices(
         system_fe.n_dofs_per_cell());
 
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -75,7 +74,7 @@ namespace Common
                     for (unsigned int c = 0; c < dim; ++c)
                       dofs[c] =
                         dof_indices[system_fe.component_to_system_index(c, i)];
-                    const auto it = node_of_dof.find(dofs[0]);
+                    const auto   it = node_of_dof.find(dofs[0]);
                     unsigned int node;
                     if (it == node_of_dof.end())
                       {
@@ -193,10 +192,10 @@ namespace Common
     template <int dim>
     void
     ContactSurface<dim>::shape_values_and_derivatives(
-      const unsigned int                   f,
-      const Point<dim - 1>                &eta,
-      std::vector<double>                 &values,
-      std::vector<Tensor<1, dim - 1>>     &derivatives) const
+      const unsigned int               f,
+      const Point<dim - 1>            &eta,
+      std::vector<double>             &values,
+      std::vector<Tensor<1, dim - 1>> &derivatives) const
     {
       const SurfaceFace<dim> &face = faces[f];
       const Point<dim>        p    = unit_cell_point(face.face_no, eta);
@@ -204,7 +203,7 @@ namespace Common
       derivatives.resize(face.shape_indices.size());
       for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
         {
-          values[a] = fe.shape_value(face.shape_indices[a], p);
+          values[a]                 = fe.shape_value(face.shape_indices[a], p);
           const Tensor<1, dim> grad = fe.shape_grad(face.shape_indices[a], p);
           for (unsigned int k = 0; k < dim - 1; ++k)
             derivatives[a][k] = grad * face_axes[face.face_no][k];
@@ -231,9 +230,9 @@ namespace Common
     template <int dim>
     Point<dim>
     ContactSurface<dim>::point_and_tangents(
-      const unsigned int                      f,
-      const Point<dim - 1>                   &eta,
-      std::array<Tensor<1, dim>, dim - 1>    &tangents) const
+      const unsigned int                   f,
+      const Point<dim - 1>                &eta,
+      std::array<Tensor<1, dim>, dim - 1> &tangents) const
     {
       std::vector<double>             values;
       std::vector<Tensor<1, dim - 1>> derivatives;
@@ -307,8 +306,7 @@ namespace Common
       double size = 0;
       for (const unsigned int a : faces[f].nodes)
         for (const unsigned int b : faces[f].nodes)
-          size =
-            std::max(size, nodes[a].position.distance(nodes[b].position));
+          size = std::max(size, nodes[a].position.distance(nodes[b].position));
       return size;
     }
 

@@ -1,7 +1,6 @@
 #include <common/contact/mortar_coupling.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -36,7 +35,7 @@ namespace Common
       rows.assign(n_nodes, MortarRow<dim>());
       dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
       std::vector<std::map<unsigned int, double>> weights(n_nodes);
-      std::vector<bool> node_covered(n_nodes, true);
+      std::vector<bool>                           node_covered(n_nodes, true);
 
       const unsigned int degree = secondary->base_element().degree;
       // Exact for the products of shape functions on straight faces, and
@@ -99,64 +98,67 @@ namespace Common
                                      "only."));
             }
           else
-          for (const unsigned int m : search.faces_near(
-                 secondary->bounding_box(s, search_distance)))
-            {
-              const Point<dim - 1> eta_0(0.), eta_1(1.);
-              const auto           p0 =
-                ContactSearch<dim>::project_along_normal_field(
-                  *secondary, s, primary->point(m, eta_0));
-              const auto p1 = ContactSearch<dim>::project_along_normal_field(
-                *secondary, s, primary->point(m, eta_1));
-              if (!p0.converged || !p1.converged)
-                continue;
-              const double xi_a =
-                std::max(0., std::min(p0.eta[0], p1.eta[0]));
-              const double xi_b =
-                std::min(1., std::max(p0.eta[0], p1.eta[0]));
-              if (xi_b - xi_a < 1e-12)
-                continue;
+            for (const unsigned int m :
+                 search.faces_near(secondary->bounding_box(s, search_distance)))
+              {
+                const Point<dim - 1> eta_0(0.), eta_1(1.);
+                const auto p0 = ContactSearch<dim>::project_along_normal_field(
+                  *secondary,
+                  s,
+                  primary->point(m, eta_0));
+                const auto p1 = ContactSearch<dim>::project_along_normal_field(
+                  *secondary,
+                  s,
+                  primary->point(m, eta_1));
+                if (!p0.converged || !p1.converged)
+                  continue;
+                const double xi_a =
+                  std::max(0., std::min(p0.eta[0], p1.eta[0]));
+                const double xi_b =
+                  std::min(1., std::max(p0.eta[0], p1.eta[0]));
+                if (xi_b - xi_a < 1e-12)
+                  continue;
 
-              for (unsigned int q = 0; q < segment_quadrature.size(); ++q)
-                {
-                  const Point<dim - 1> xi(
-                    xi_a + (xi_b - xi_a) * segment_quadrature.point(q)[0]);
-                  const double weight =
-                    segment_quadrature.weight(q) * (xi_b - xi_a);
+                for (unsigned int q = 0; q < segment_quadrature.size(); ++q)
+                  {
+                    const Point<dim - 1> xi(
+                      xi_a + (xi_b - xi_a) * segment_quadrature.point(q)[0]);
+                    const double weight =
+                      segment_quadrature.weight(q) * (xi_b - xi_a);
 
-                  // Secondary point and the interpolated normal field.
-                  secondary->shape_values(s, xi, N);
-                  Point<dim>     x;
-                  Tensor<1, dim> n;
-                  for (unsigned int a = 0; a < n_shape; ++a)
-                    {
-                      x += N[a] * secondary->node(face.nodes[a]).position;
-                      n += N[a] * secondary->node(face.nodes[a]).normal;
-                    }
-                  n /= n.norm();
+                    // Secondary point and the interpolated normal field.
+                    secondary->shape_values(s, xi, N);
+                    Point<dim>     x;
+                    Tensor<1, dim> n;
+                    for (unsigned int a = 0; a < n_shape; ++a)
+                      {
+                        x += N[a] * secondary->node(face.nodes[a]).position;
+                        n += N[a] * secondary->node(face.nodes[a]).normal;
+                      }
+                    n /= n.norm();
 
-                  const auto projection =
-                    ContactSearch<dim>::project_along(*primary, m, x, n);
-                  if (!projection.inside(1e-9) ||
-                      std::abs(projection.distance) > search_distance ||
-                      primary->unit_normal(m, projection.eta) * n >= 0.)
-                    continue;
+                    const auto projection =
+                      ContactSearch<dim>::project_along(*primary, m, x, n);
+                    if (!projection.inside(1e-9) ||
+                        std::abs(projection.distance) > search_distance ||
+                        primary->unit_normal(m, projection.eta) * n >= 0.)
+                      continue;
 
-                  const double JxW = secondary->jacobian(s, xi) * weight;
-                  covered_measure += JxW;
-                  primary->shape_values(m, projection.eta, N_primary);
-                  const auto &primary_nodes = primary->face(m).nodes;
-                  for (unsigned int a = 0; a < n_shape; ++a)
-                    {
-                      double psi = 0.;
-                      for (unsigned int b = 0; b < n_shape; ++b)
-                        psi += A(a, b) * N[b];
-                      for (unsigned int k = 0; k < primary_nodes.size(); ++k)
-                        weights[face.nodes[a]][primary_nodes[k]] +=
-                          psi * N_primary[k] * JxW;
-                    }
-                }
-            }
+                    const double JxW = secondary->jacobian(s, xi) * weight;
+                    covered_measure += JxW;
+                    primary->shape_values(m, projection.eta, N_primary);
+                    const auto &primary_nodes = primary->face(m).nodes;
+                    for (unsigned int a = 0; a < n_shape; ++a)
+                      {
+                        double psi = 0.;
+                        for (unsigned int b = 0; b < n_shape; ++b)
+                          psi += A(a, b) * N[b];
+                        for (unsigned int k = 0; k < primary_nodes.size(); ++k)
+                          weights[face.nodes[a]][primary_nodes[k]] +=
+                            psi * N_primary[k] * JxW;
+                      }
+                  }
+              }
           if (std::abs(covered_measure - face_measure) >
               coverage_tolerance * face_measure)
             for (unsigned int a = 0; a < n_shape; ++a)
@@ -168,17 +170,18 @@ namespace Common
         if (node_covered[j] && !weights[j].empty())
           {
             const SurfaceNode<dim> &node = secondary->node(j);
-            BoundingBox<dim>        box(std::make_pair(node.position,
-                                                node.position));
+            BoundingBox<dim> box(std::make_pair(node.position, node.position));
             box.extend(search_distance);
             for (const unsigned int m : search.faces_near(box))
               {
-                const auto projection = ContactSearch<dim>::project_along(
-                  *primary, m, node.position, node.normal);
+                const auto projection =
+                  ContactSearch<dim>::project_along(*primary,
+                                                    m,
+                                                    node.position,
+                                                    node.normal);
                 if (projection.inside(1e-9) &&
                     std::abs(projection.distance) <= search_distance &&
-                    std::abs(projection.distance) <
-                      std::abs(rows[j].nodal_gap))
+                    std::abs(projection.distance) < std::abs(rows[j].nodal_gap))
                   rows[j].nodal_gap = projection.distance;
               }
           }
@@ -281,11 +284,12 @@ namespace Common
 
     template class MortarCoupling<2>;
     template class MortarCoupling<3>;
-#define INSTANTIATE(dim, V)                                              \
-  template double MortarCoupling<dim>::weighted_gap(const unsigned int, \
+#define INSTANTIATE(dim, V)                                                     \
+  template double         MortarCoupling<dim>::weighted_gap(const unsigned int, \
                                                     const V &) const;   \
-  template Tensor<1, dim> MortarCoupling<dim>::relative_displacement(   \
-    const unsigned int, const V &) const;
+  template Tensor<1, dim> MortarCoupling<dim>::relative_displacement(           \
+    const unsigned int,                                                         \
+    const V &) const;
     INSTANTIATE(2, Vector<double>)
     INSTANTIATE(3, Vector<double>)
     INSTANTIATE(2, TrilinosWrappers::MPI::Vector)

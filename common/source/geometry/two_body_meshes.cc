@@ -57,7 +57,7 @@ namespace Common
 
     template <int dim>
     void
-    refine_toward(Triangulation<dim>                               &tria,
+    refine_toward(Triangulation<dim>                              &tria,
                   const std::function<double(const Point<dim> &)> &distance,
                   const unsigned int                               n_passes,
                   const double                                     factor)
@@ -75,8 +75,9 @@ namespace Common
 
     template <int dim>
     double
-    smallest_cell_near(const Triangulation<dim>                        &tria,
-                       const std::function<double(const Point<dim> &)> &distance)
+    smallest_cell_near(
+      const Triangulation<dim>                        &tria,
+      const std::function<double(const Point<dim> &)> &distance)
     {
       double h = std::numeric_limits<double>::max();
       for (const auto &cell : tria.active_cell_iterators())

@@ -143,8 +143,9 @@ namespace Common
     JsonObject::set(const std::string &key, const JsonObject &value)
     {
       // Nested objects are stored unindented and re-indented on output.
-      return set_raw(key, "\x01" + std::to_string(entries.size()) + "\x01" +
-                            value.to_string(0));
+      return set_raw(key,
+                     "\x01" + std::to_string(entries.size()) + "\x01" +
+                       value.to_string(0));
     }
 
 

@@ -55,9 +55,9 @@ namespace Common
         write_graphical_output = prm.get_bool("Write graphical output");
         write_plots            = prm.get_bool("Write plots");
         const std::string v    = prm.get("Verbosity");
-        verbosity = (v == "quiet"  ? Verbosity::quiet :
-                     v == "normal" ? Verbosity::normal :
-                                     Verbosity::verbose);
+        verbosity              = (v == "quiet"  ? Verbosity::quiet :
+                                  v == "normal" ? Verbosity::normal :
+                                                  Verbosity::verbose);
       }
       prm.leave_subsection();
     }

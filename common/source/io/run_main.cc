@@ -59,12 +59,12 @@ namespace Common
 
     int
     run_main(
-      int                                                   argc,
-      char                                                **argv,
-      const std::string                                    &application_name,
-      const std::string                                    &description,
+      int                                                    argc,
+      char                                                 **argv,
+      const std::string                                     &application_name,
+      const std::string                                     &description,
       const std::function<void(dealii::ParameterHandler &)> &declare_parameters,
-      const std::function<void(const std::string &)>       &run)
+      const std::function<void(const std::string &)>        &run)
     {
       // deal.II's exceptions print their own banner to std::cerr before
       // they are thrown from some places (e.g. in debug mode): suppress
@@ -97,8 +97,7 @@ namespace Common
               dealii::ParameterHandler prm;
               declare_parameters(prm);
               if (root)
-                prm.print_parameters(std::cout,
-                                     dealii::ParameterHandler::Text);
+                prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
               return 0;
             }
           AssertThrow(std::filesystem::is_regular_file(argument),

@@ -1,7 +1,6 @@
 #include <common/io/solution_output.h>
 
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <fstream>
@@ -41,7 +40,8 @@ namespace Common
       DoFHandler<dim> scalar_dof_handler(dof_handler.get_triangulation());
       scalar_dof_handler.distribute_dofs(fe.base_element(0));
       std::vector<Vector<double>> scalar_vectors(
-        scalar_fields.size(), Vector<double>(scalar_dof_handler.n_dofs()));
+        scalar_fields.size(),
+        Vector<double>(scalar_dof_handler.n_dofs()));
       {
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
         std::vector<types::global_dof_index> scalar_dofs(
@@ -68,9 +68,11 @@ namespace Common
       DataOut<dim> data_out;
       data_out.attach_dof_handler(dof_handler);
       const std::vector<std::string> names(dim, "displacement");
-      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(dim,
-                       DataComponentInterpretation::component_is_part_of_vector);
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          dim,
+          DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(u,
                                names,
                                DataOut<dim>::type_dof_data,
@@ -88,11 +90,14 @@ namespace Common
       data_out.add_data_vector(body, "body");
 
       const unsigned int degree = fe.degree;
-      data_out.build_patches(mapping,
-                             degree,
-                             DataOut<dim>::curved_inner_cells);
-      const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-        parameters.directory + "/", base_name, step, mpi_communicator, 4, 0);
+      data_out.build_patches(mapping, degree, DataOut<dim>::curved_inner_cells);
+      const std::string pvtu =
+        data_out.write_vtu_with_pvtu_record(parameters.directory + "/",
+                                            base_name,
+                                            step,
+                                            mpi_communicator,
+                                            4,
+                                            0);
 
       records.emplace_back(time, pvtu);
       if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)

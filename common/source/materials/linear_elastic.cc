@@ -2,6 +2,8 @@
 
 #include <deal.II/physics/elasticity/standard_tensors.h>
 
+#include <sstream>
+
 namespace Common
 {
   namespace Materials
@@ -41,12 +43,14 @@ namespace Common
       }
       prm.leave_subsection();
       AssertThrow(youngs_modulus > 0.,
-                  ExcMessage(subsection + ": Young's modulus must be "
-                                          "positive, got " +
+                  ExcMessage(subsection +
+                             ": Young's modulus must be "
+                             "positive, got " +
                              std::to_string(youngs_modulus) + " MPa."));
       AssertThrow(poisson_ratio > -1. && poisson_ratio < 0.5,
-                  ExcMessage(subsection + ": Poisson's ratio must lie in "
-                                          "(-1, 0.5), got " +
+                  ExcMessage(subsection +
+                             ": Poisson's ratio must lie in "
+                             "(-1, 0.5), got " +
                              std::to_string(poisson_ratio) + "."));
     }
 
@@ -60,13 +64,12 @@ namespace Common
       const double nu = parameters.poisson_ratio;
       AssertThrow(E > 0. && nu > -1. && nu < 0.5,
                   ExcMessage("Linear elastic: invalid E or nu."));
-      lambda    = E * nu / ((1. + nu) * (1. - 2. * nu));
-      mu        = E / (2. * (1. + nu));
-      stiffness = lambda * outer_product(Physics::Elasticity::StandardTensors<
-                                           dim>::I,
-                                         Physics::Elasticity::StandardTensors<
-                                           dim>::I) +
-                  2. * mu * Physics::Elasticity::StandardTensors<dim>::S;
+      lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+      mu     = E / (2. * (1. + nu));
+      stiffness =
+        lambda * outer_product(Physics::Elasticity::StandardTensors<dim>::I,
+                               Physics::Elasticity::StandardTensors<dim>::I) +
+        2. * mu * Physics::Elasticity::StandardTensors<dim>::S;
     }
 
 

@@ -11,8 +11,8 @@ namespace Common
 
     template <int dim>
     SmallStrainElasticity<dim>::SmallStrainElasticity(
-      const Mapping<dim>                                         &mapping,
-      const FiniteElement<dim>                                   &fe,
+      const Mapping<dim>       &mapping,
+      const FiniteElement<dim> &fe,
       const std::map<types::material_id, Materials::LinearElastic<dim>>
         &materials)
       : mapping(mapping)
@@ -54,18 +54,18 @@ namespace Common
       cell_matrices.assign(dof_handler.get_triangulation().n_active_cells(),
                            FullMatrix<double>());
 
-      FEValues<dim> fe_values(mapping,
+      FEValues<dim>                        fe_values(mapping,
                               fe,
                               quadrature,
                               update_gradients | update_JxW_values);
-      const FEValuesExtractors::Vector       displacement(0);
-      std::vector<SymmetricTensor<2, dim>>   sym_grad(dofs_per_cell);
+      const FEValuesExtractors::Vector     displacement(0);
+      std::vector<SymmetricTensor<2, dim>> sym_grad(dofs_per_cell);
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            const auto &C = material(cell->material_id()).tangent();
+            const auto         &C = material(cell->material_id()).tangent();
             FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
             K.reinit(dofs_per_cell, dofs_per_cell);
             for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -92,17 +92,17 @@ namespace Common
     template <int dim>
     void
     SmallStrainElasticity<dim>::assemble_system(
-      const DoFHandler<dim>                 &dof_handler,
-      const AffineConstraints<double>       &constraints,
-      const TrilinosWrappers::MPI::Vector   &u,
-      TrilinosWrappers::SparseMatrix        &matrix,
-      TrilinosWrappers::MPI::Vector         &residual)
+      const DoFHandler<dim>               &dof_handler,
+      const AffineConstraints<double>     &constraints,
+      const TrilinosWrappers::MPI::Vector &u,
+      TrilinosWrappers::SparseMatrix      &matrix,
+      TrilinosWrappers::MPI::Vector       &residual)
     {
       if (cell_matrices.size() !=
           dof_handler.get_triangulation().n_active_cells())
         compute_cell_matrices(dof_handler);
 
-      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
       Vector<double>                       u_cell(dofs_per_cell);
       Vector<double>                       r_cell(dofs_per_cell);
@@ -117,8 +117,11 @@ namespace Common
               cell_matrices[cell->active_cell_index()];
             K.vmult(r_cell, u_cell);
             r_cell *= -1.;
-            constraints.distribute_local_to_global(
-              K, r_cell, dof_indices, matrix, residual);
+            constraints.distribute_local_to_global(K,
+                                                   r_cell,
+                                                   dof_indices,
+                                                   matrix,
+                                                   residual);
           }
     }
 
@@ -128,6 +131,7 @@ namespace Common
     void
     SmallStrainElasticity<dim>::assemble_internal_force(
       const DoFHandler<dim>               &dof_handler,
+      const AffineConstraints<double>     &constraints,
       const TrilinosWrappers::MPI::Vector &u,
       TrilinosWrappers::MPI::Vector       &internal_force)
     {
@@ -135,12 +139,11 @@ namespace Common
           dof_handler.get_triangulation().n_active_cells())
         compute_cell_matrices(dof_handler);
 
-      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
       Vector<double>                       u_cell(dofs_per_cell);
       Vector<double>                       f_cell(dofs_per_cell);
 
-      internal_force = 0.;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -148,9 +151,10 @@ namespace Common
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               u_cell(i) = u(dof_indices[i]);
             cell_matrices[cell->active_cell_index()].vmult(f_cell, u_cell);
-            internal_force.add(dof_indices, f_cell);
+            constraints.distribute_local_to_global(f_cell,
+                                                   dof_indices,
+                                                   internal_force);
           }
-      internal_force.compress(VectorOperation::add);
     }
 
 

@@ -2,10 +2,10 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -55,8 +55,8 @@ namespace Common
         const std::string name = prm.get("Solver type");
         type           = (name == "umfpack" ? LinearSolverType::umfpack :
                           name == "mumps"   ? LinearSolverType::mumps :
-                          name == "klu"   ? LinearSolverType::klu :
-                                            LinearSolverType::cg_amg);
+                          name == "klu"     ? LinearSolverType::klu :
+                                              LinearSolverType::cg_amg);
         tolerance      = prm.get_double("Tolerance");
         max_iterations = prm.get_integer("Maximum iterations");
       }
@@ -67,7 +67,7 @@ namespace Common
 
     struct LinearSolver::DirectSolverData
     {
-      const Epetra_CrsMatrix                *matrix = nullptr;
+      const Epetra_CrsMatrix               *matrix = nullptr;
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
     };
@@ -105,16 +105,17 @@ namespace Common
       // new object (or reset()) starts over.
       if (!direct || direct->matrix != &A.trilinos_matrix())
         {
-          direct         = std::make_unique<DirectSolverData>();
-          direct->matrix = &A.trilinos_matrix();
+          direct          = std::make_unique<DirectSolverData>();
+          direct->matrix  = &A.trilinos_matrix();
           direct->problem = std::make_unique<Epetra_LinearProblem>();
           direct->problem->SetOperator(
             const_cast<Epetra_CrsMatrix *>(direct->matrix));
           Amesos factory;
-          direct->solver.reset(factory.Create(
-            parameters.type == LinearSolverType::mumps ? "Amesos_Mumps" :
-                                                         "Amesos_Klu",
-            *direct->problem));
+          direct->solver.reset(
+            factory.Create(parameters.type == LinearSolverType::mumps ?
+                             "Amesos_Mumps" :
+                             "Amesos_Klu",
+                           *direct->problem));
           AssertThrow(direct->solver != nullptr,
                       ExcMessage("The requested direct solver is not "
                                  "available in this Trilinos."));
@@ -122,9 +123,8 @@ namespace Common
                       ExcMessage("Symbolic factorisation failed."));
         }
       direct->problem->SetLHS(&x.trilinos_vector());
-      direct->problem->SetRHS(
-        const_cast<Epetra_MultiVector *>(
-          static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+      direct->problem->SetRHS(const_cast<Epetra_MultiVector *>(
+        static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
       AssertThrow(direct->solver->NumericFactorization() == 0,
                   ExcMessage("Numeric factorisation failed: the linear "
                              "system is singular."));
@@ -136,16 +136,16 @@ namespace Common
 
 
     unsigned int
-    solve_linear_system(const LinearSolverParameters        &parameters,
+    solve_linear_system(const LinearSolverParameters         &parameters,
                         const TrilinosWrappers::SparseMatrix &A,
-                        TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b)
+                        TrilinosWrappers::MPI::Vector        &x,
+                        const TrilinosWrappers::MPI::Vector  &b)
     {
       if (parameters.type == LinearSolverType::cg_amg)
         {
-          SolverControl control(parameters.max_iterations,
+          SolverControl                     control(parameters.max_iterations,
                                 parameters.tolerance * b.l2_norm());
-          TrilinosWrappers::PreconditionAMG                 amg;
+          TrilinosWrappers::PreconditionAMG amg;
           TrilinosWrappers::PreconditionAMG::AdditionalData data;
           data.elliptic              = true;
           data.higher_order_elements = true;
@@ -183,7 +183,9 @@ namespace Common
               int    *columns;
               epetra.ExtractMyRowView(row, n_entries, values, columns);
               for (int k = 0; k < n_entries; ++k)
-                matrix.set(epetra.GRID(row), epetra.GCID(columns[k]), values[k]);
+                matrix.set(epetra.GRID(row),
+                           epetra.GCID(columns[k]),
+                           values[k]);
             }
           SparseDirectUMFPACK umfpack;
           umfpack.initialize(matrix);
@@ -197,7 +199,7 @@ namespace Common
           return 1;
         }
 
-      SolverControl                               control(1, 0);
+      SolverControl                                  control(1, 0);
       TrilinosWrappers::SolverDirect::AdditionalData data(
         false,
         parameters.type == LinearSolverType::mumps ? "Amesos_Mumps" :

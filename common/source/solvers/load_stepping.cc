@@ -54,13 +54,13 @@ namespace Common
                       IO::Console                  &console)
     {
       LoadSteppingStatistics statistics;
-      const double           nominal = 1. / parameters.n_steps;
+      const double           nominal   = 1. / parameters.n_steps;
       double                 increment = nominal;
       double                 load      = 0.;
       unsigned int           step      = 0;
       while (load < 1. - 1e-12)
         {
-          const double target = std::min(1., load + increment);
+          const double           target = std::min(1., load + increment);
           const NewtonStatistics newton = callbacks.solve(target);
           if (newton.converged)
             {

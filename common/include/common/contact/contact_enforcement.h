@@ -22,9 +22,7 @@
 #include <common/contact/mortar_coupling.h>
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -143,13 +141,18 @@ namespace Common
        * the band about its inner end lands on the edge a. If a later
        * iteration of the step must close points again, the extrapolation
        * stays off for the rest of the step.
+       *
+       * If the rule returns to an active set seen earlier in the step
+       * (ping-pong), only the point with the largest complementarity
+       * violation is changed, choosing one that leads to an unseen set;
+       * is_cycling() reports the case where none exists.
        * @return Number of nodes whose status changed.
        */
       unsigned int
       update_active_set(const VectorType &u);
 
-      /** @brief True if the last update returned to an active set seen
-       * earlier in this step (other than the previous one). */
+      /** @brief True if the last update could only return to an active
+       * set seen earlier in this step. */
       bool
       is_cycling() const;
 
@@ -179,17 +182,17 @@ namespace Common
       ncp_constant(const unsigned int j) const;
 
     private:
-      const ContactParameters                 parameters;
-      const MortarCoupling<dim>              &coupling;
-      const double                            reference_modulus;
-      std::vector<bool>                       active;
-      std::vector<double>                     pressures;
-      std::vector<bool>                       accepted_active;
-      std::vector<double>                     accepted_pressures;
-      std::vector<std::vector<bool>>          history;
-      bool                                    cycling;
-      bool                                    last_update_extrapolated;
-      bool                                    extrapolation_enabled;
+      const ContactParameters        parameters;
+      const MortarCoupling<dim>     &coupling;
+      const double                   reference_modulus;
+      std::vector<bool>              active;
+      std::vector<double>            pressures;
+      std::vector<bool>              accepted_active;
+      std::vector<double>            accepted_pressures;
+      std::vector<std::vector<bool>> history;
+      bool                           cycling;
+      bool                           last_update_extrapolated;
+      bool                           extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common

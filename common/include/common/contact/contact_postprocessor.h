@@ -92,10 +92,10 @@ namespace Common
     template <int dim>
     double
     pressure_l2_error(
-      const MortarCoupling<dim>                                 &coupling,
-      const ContactEnforcement<dim>                             &enforcement,
-      const std::function<double(const dealii::Point<dim> &)>   &reference,
-      double                                                    &reference_norm);
+      const MortarCoupling<dim>                               &coupling,
+      const ContactEnforcement<dim>                           &enforcement,
+      const std::function<double(const dealii::Point<dim> &)> &reference,
+      double                                                  &reference_norm);
 
     /**
      * @brief Write the profile as CSV with the header

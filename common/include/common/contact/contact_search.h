@@ -10,7 +10,6 @@
 #include <common/contact/contact_surface.h>
 
 #include <deal.II/base/bounding_box.h>
-
 #include <deal.II/numerics/rtree.h>
 
 #include <utility>
@@ -68,9 +67,9 @@ namespace Common
        * \f$y(\eta) = x + t\,d\f$ for (eta, t) by Newton's method.
        */
       static Projection<dim>
-      project_along(const ContactSurface<dim> &surface,
-                    const unsigned int         f,
-                    const dealii::Point<dim>  &x,
+      project_along(const ContactSurface<dim>    &surface,
+                    const unsigned int            f,
+                    const dealii::Point<dim>     &x,
                     const dealii::Tensor<1, dim> &direction);
 
       /**
@@ -85,9 +84,9 @@ namespace Common
                                  const dealii::Point<dim>  &y);
 
     private:
-      const ContactSurface<dim>                              &surface;
-      const double                                            margin;
-      std::vector<std::pair<dealii::BoundingBox<dim>, unsigned int>> boxes;
+      const ContactSurface<dim>                                       &surface;
+      const double                                                     margin;
+      std::vector<std::pair<dealii::BoundingBox<dim>, unsigned int>>   boxes;
       dealii::RTree<std::pair<dealii::BoundingBox<dim>, unsigned int>> tree;
     };
   } // namespace Contact

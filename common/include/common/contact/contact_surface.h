@@ -11,9 +11,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/mapping.h>
 
 #include <array>
@@ -77,8 +75,8 @@ namespace Common
        * @param[in] boundary_id Boundary id of the surface.
        * Throws if no face carries @p boundary_id.
        */
-      ContactSurface(const dealii::DoFHandler<dim> &dof_handler,
-                     const dealii::Mapping<dim>    &mapping,
+      ContactSurface(const dealii::DoFHandler<dim>   &dof_handler,
+                     const dealii::Mapping<dim>      &mapping,
                      const dealii::types::boundary_id boundary_id);
 
       /** @brief Number of faces. */
@@ -99,17 +97,17 @@ namespace Common
 
       /** @brief Shape values of the face's nodes at @p eta. */
       void
-      shape_values(const unsigned int              f,
-                   const dealii::Point<dim - 1>   &eta,
-                   std::vector<double>            &values) const;
+      shape_values(const unsigned int            f,
+                   const dealii::Point<dim - 1> &eta,
+                   std::vector<double>          &values) const;
 
       /** @brief Shape values and derivatives d/d eta_k at @p eta. */
       void
       shape_values_and_derivatives(
-        const unsigned int                                 f,
-        const dealii::Point<dim - 1>                      &eta,
-        std::vector<double>                               &values,
-        std::vector<dealii::Tensor<1, dim - 1>>           &derivatives) const;
+        const unsigned int                       f,
+        const dealii::Point<dim - 1>            &eta,
+        std::vector<double>                     &values,
+        std::vector<dealii::Tensor<1, dim - 1>> &derivatives) const;
 
       /** @brief Current position x(eta) on face @p f (mm). */
       dealii::Point<dim>
@@ -121,13 +119,14 @@ namespace Common
        */
       dealii::Point<dim>
       point_and_tangents(
-        const unsigned int                             f,
-        const dealii::Point<dim - 1>                  &eta,
-        std::array<dealii::Tensor<1, dim>, dim - 1>   &tangents) const;
+        const unsigned int                           f,
+        const dealii::Point<dim - 1>                &eta,
+        std::array<dealii::Tensor<1, dim>, dim - 1> &tangents) const;
 
       /** @brief Outward unit normal of face @p f at @p eta. */
       dealii::Tensor<1, dim>
-      unit_normal(const unsigned int f, const dealii::Point<dim - 1> &eta) const;
+      unit_normal(const unsigned int            f,
+                  const dealii::Point<dim - 1> &eta) const;
 
       /** @brief Area element |dx/d eta| (mm^(dim-1)). */
       double

@@ -9,7 +9,6 @@
 #define common_geometry_two_body_meshes_h
 
 #include <deal.II/base/point.h>
-
 #include <deal.II/grid/tria.h>
 
 #include <functional>
@@ -39,10 +38,11 @@ namespace Common
      */
     template <int dim>
     void
-    refine_toward(dealii::Triangulation<dim>                           &tria,
-                  const std::function<double(const dealii::Point<dim> &)> &distance,
-                  const unsigned int                                    n_passes,
-                  const double                                          factor);
+    refine_toward(
+      dealii::Triangulation<dim>                              &tria,
+      const std::function<double(const dealii::Point<dim> &)> &distance,
+      const unsigned int                                       n_passes,
+      const double                                             factor);
 
     /**
      * @brief Smallest cell diameter near a region: the minimum over cells

@@ -33,12 +33,12 @@ namespace Common
      */
     int
     run_main(
-      int                                                   argc,
-      char                                                **argv,
-      const std::string                                    &application_name,
-      const std::string                                    &description,
+      int                                                    argc,
+      char                                                 **argv,
+      const std::string                                     &application_name,
+      const std::string                                     &description,
       const std::function<void(dealii::ParameterHandler &)> &declare_parameters,
-      const std::function<void(const std::string &)>       &run);
+      const std::function<void(const std::string &)>        &run);
 
     /**
      * @brief Collapse the message of an exception into one line. For

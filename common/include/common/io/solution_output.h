@@ -11,12 +11,9 @@
 #include <common/io/output_parameters.h>
 
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/mapping.h>
-
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
-
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <map>
@@ -61,13 +58,14 @@ namespace Common
        * @param[in] time Pseudo-time of the step (load factor).
        */
       void
-      write(const dealii::DoFHandler<dim>                           &dof_handler,
-            const dealii::Mapping<dim>                              &mapping,
-            const dealii::TrilinosWrappers::MPI::Vector             &u,
-            const std::vector<const dealii::DataPostprocessor<dim> *> &postprocessors,
-            const std::vector<NodalScalarField>                     &scalar_fields,
-            const double                                             time,
-            const unsigned int                                       step);
+      write(const dealii::DoFHandler<dim>               &dof_handler,
+            const dealii::Mapping<dim>                  &mapping,
+            const dealii::TrilinosWrappers::MPI::Vector &u,
+            const std::vector<const dealii::DataPostprocessor<dim> *>
+                                                &postprocessors,
+            const std::vector<NodalScalarField> &scalar_fields,
+            const double                         time,
+            const unsigned int                   step);
 
     private:
       const OutputParameters                     &parameters;

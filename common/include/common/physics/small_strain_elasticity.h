@@ -10,17 +10,13 @@
 #include <common/materials/linear_elastic.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <map>
@@ -50,10 +46,10 @@ namespace Common
        * present.
        */
       SmallStrainElasticity(
-        const dealii::Mapping<dim>                                &mapping,
-        const dealii::FiniteElement<dim>                          &fe,
+        const dealii::Mapping<dim>                    &mapping,
+        const dealii::FiniteElement<dim>              &fe,
         const std::map<dealii::types::material_id,
-                       Materials::LinearElastic<dim>>             &materials);
+                       Materials::LinearElastic<dim>> &materials);
 
       /**
        * @brief Assemble the tangent K and the residual
@@ -65,19 +61,22 @@ namespace Common
        * can be added first.
        */
       void
-      assemble_system(const dealii::DoFHandler<dim>             &dof_handler,
-                      const dealii::AffineConstraints<double>   &constraints,
+      assemble_system(const dealii::DoFHandler<dim>               &dof_handler,
+                      const dealii::AffineConstraints<double>     &constraints,
                       const dealii::TrilinosWrappers::MPI::Vector &u,
-                      dealii::TrilinosWrappers::SparseMatrix    &matrix,
-                      dealii::TrilinosWrappers::MPI::Vector     &residual);
+                      dealii::TrilinosWrappers::SparseMatrix      &matrix,
+                      dealii::TrilinosWrappers::MPI::Vector       &residual);
 
       /**
-       * @brief Internal force vector \f$f_{int}(u) = \int B^T\sigma\f$ (N),
-       * without constraints, on locally owned cells; compressed on return.
+       * @brief Internal force vector \f$f_{int}(u) = \int B^T\sigma\f$ (N)
+       * on locally owned cells, condensed with @p constraints (hanging-node
+       * forces moved to their parents, constrained rows left zero) exactly
+       * as the residual of assemble_system(). Not compressed here.
        */
       void
       assemble_internal_force(
         const dealii::DoFHandler<dim>               &dof_handler,
+        const dealii::AffineConstraints<double>     &constraints,
         const dealii::TrilinosWrappers::MPI::Vector &u,
         dealii::TrilinosWrappers::MPI::Vector       &internal_force);
 
@@ -90,12 +89,12 @@ namespace Common
       material(const dealii::types::material_id id) const;
 
     private:
-      const dealii::Mapping<dim>                                  &mapping;
-      const dealii::FiniteElement<dim>                            &fe;
-      const std::map<dealii::types::material_id,
-                     Materials::LinearElastic<dim>>                 materials;
-      const dealii::QGauss<dim>                                     quadrature;
-      std::vector<dealii::FullMatrix<double>>                       cell_matrices;
+      const dealii::Mapping<dim>       &mapping;
+      const dealii::FiniteElement<dim> &fe;
+      const std::map<dealii::types::material_id, Materials::LinearElastic<dim>>
+                                              materials;
+      const dealii::QGauss<dim>               quadrature;
+      std::vector<dealii::FullMatrix<double>> cell_matrices;
 
       void
       compute_cell_matrices(const dealii::DoFHandler<dim> &dof_handler);
@@ -118,7 +117,8 @@ namespace Common
       void
       evaluate_vector_field(
         const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<dealii::Vector<double>> &computed_quantities) const override;
+        std::vector<dealii::Vector<double>>                &computed_quantities)
+        const override;
 
     private:
       const SmallStrainElasticity<dim> &physics;

@@ -9,7 +9,6 @@
 #define common_solvers_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -87,10 +86,10 @@ namespace Common
      * @return Number of iterations (1 for direct solvers).
      */
     unsigned int
-    solve_linear_system(const LinearSolverParameters                &parameters,
+    solve_linear_system(const LinearSolverParameters &parameters,
                         const dealii::TrilinosWrappers::SparseMatrix &A,
-                        dealii::TrilinosWrappers::MPI::Vector       &x,
-                        const dealii::TrilinosWrappers::MPI::Vector &b);
+                        dealii::TrilinosWrappers::MPI::Vector        &x,
+                        const dealii::TrilinosWrappers::MPI::Vector  &b);
   } // namespace Solvers
 } // namespace Common
 
