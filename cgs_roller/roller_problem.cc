@@ -439,7 +439,10 @@ namespace CgsRoller
       peak = std::max(peak, p.pressure);
     const double half_width = Common::Contact::contact_extent(profile, 0);
 
-    console.stream() << "Step " << step << ", load factor "
+    // Step counts beyond the nominal number come from cutbacks.
+    console.stream() << "Load step " << step << " of "
+                     << std::max(step, parameters.load_stepping.n_steps)
+                     << ", load factor "
                      << Common::IO::Console::format(load_factor)
                      << ": Newton iterations " << statistics.n_iterations
                      << ", active contact nodes " << enforcement->n_active()

@@ -1,17 +1,58 @@
 #!/usr/bin/env bash
-# Set up, build in Release and run every production case of the suite;
-# results go to results/<app>/<case>/.
-# Usage: scripts/run_main.sh
+# The main job: set up, build in Release, run every production case of the
+# suite, run the accuracy-versus-time study, and write results/report.html.
+# Usage: scripts/run_main.sh [--quick]
+#   --quick  coarser meshes and a shorter study, for a first look.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
+quick=false
+case "${1:-}" in
+  --quick) quick=true ;;
+  "") ;;
+  *) echo "usage: scripts/run_main.sh [--quick]" >&2; exit 2 ;;
+esac
+
+setup_start=$SECONDS
 bash scripts/setup.sh
 bash scripts/build.sh Release "$root/build-release"
+echo "== setup and build: $((SECONDS - setup_start)) s"
 
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-start=$(date +%s)
+results="$root/results"
+mkdir -p "$results"
+rm -f "$results/report.html"
+start=$SECONDS
+
+# Run one case; prefix every console line with the elapsed time.
+run_case() { # app, production .prm
+  local app="$1" prm="$2" name
+  name="$(basename "$prm" .prm)"
+  echo "== [$((SECONDS - start)) s] $app: $name"
+  if $quick; then
+    mkdir -p "$results/quick"
+    { echo "include $root/$prm"
+      echo "subsection Mesh"
+      echo "  set Number of contact refinements = 6"
+      echo "end"; } > "$results/quick/$name.prm"
+    prm="$results/quick/$name.prm"
+  fi
+  "$root/build-release/$app/$app" "$prm" 2>&1 |
+    while IFS= read -r line; do printf '  [%4d s] %s\n' $((SECONDS - start)) "$line"; done
+}
+
 for prm in parameters/cgs_roller/*.prm; do
-  echo "== cgs_roller $prm"
-  "$root/build-release/cgs_roller/cgs_roller" "$prm"
+  run_case cgs_roller "$prm"
 done
-echo "== main job finished in $(( $(date +%s) - start )) s; results in $root/results"
+echo "== [$((SECONDS - start)) s] production cases done"
+
+study_start=$SECONDS
+echo "== accuracy-versus-time study (benchmark 1)"
+if $quick; then study_flags=(--quick --degrees 1 2); else study_flags=(); fi
+python3 scripts/accuracy_time_study.py "${study_flags[@]}" \
+  --build "$root/build-release" --out "$results/studies/cgs_roller_accuracy_time"
+echo "== study wall time: $((SECONDS - study_start)) s"
+
+python3 scripts/make_report.py --results "$results"
+echo "== main job wall time: $((SECONDS - start)) s (plus $((start - setup_start)) s setup and build)"
+echo "== open $results/report.html"
