@@ -51,13 +51,6 @@ namespace CgsRoller
     , mapping(parameters.mesh.element_degree)
     , dof_handler(triangulation)
     , load_dof(numbers::invalid_dof_index)
-    , linear_solver(parameters.linear_solver)
-    , contact_setup_time(0.)
-    , contact_solve_time(0.)
-    , assembly_time(0.)
-    , linear_solve_time(0.)
-    , residual_time(0.)
-    , active_set_time(0.)
   {}
 
 
@@ -152,14 +145,13 @@ namespace CgsRoller
   RollerProblem<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
-    locally_owned_dofs    = dof_handler.locally_owned_dofs();
-    locally_relevant_dofs = complete_index_set(dof_handler.n_dofs());
 
     // Hanging nodes of the graded mesh, and homogeneous Dirichlet
     // conditions on the Newton increment: fixed block bottom, u_x = 0 on
     // both symmetry lines.
     constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
+    constraints_dirichlet_and_hanging_nodes.reinit(
+      complete_index_set(dof_handler.n_dofs()));
     DoFTools::make_hanging_node_constraints(
       dof_handler,
       constraints_dirichlet_and_hanging_nodes);
@@ -206,206 +198,48 @@ namespace CgsRoller
                                                                     fe,
                                                                     materials);
 
-    solution.reinit(locally_owned_dofs,
-                    locally_relevant_dofs,
-                    mpi_communicator);
-    solution_owned.reinit(locally_owned_dofs, mpi_communicator);
-    accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
-    newton_update.reinit(locally_owned_dofs, mpi_communicator);
-    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-    bulk_residual.reinit(locally_owned_dofs,
-                         locally_relevant_dofs,
-                         mpi_communicator);
+    contact_problem =
+      std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
+        dof_handler,
+        mapping,
+        *physics,
+        parameters.contact,
+        parameters.linear_solver,
+        parameters.nonlinear_solver,
+        parameters.block_material.youngs_modulus,
+        mpi_communicator);
+    contact_problem->setup(constraints_dirichlet_and_hanging_nodes);
   }
 
 
 
-  // Small strain: the contact geometry is evaluated once, in the reference
-  // configuration. The block's top is the secondary surface (multipliers,
-  // reported pressures), the roller's surface the primary one.
+  // The point force on the roller's top vertex, half of the benchmark's
+  // force per thickness (half model).
   template <int dim>
-  void
-  RollerProblem<dim>::setup_contact()
+  Common::Problems::ExternalLoad
+  RollerProblem<dim>::external_load() const
   {
-    const auto start = std::chrono::steady_clock::now();
-    secondary        = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler,
-      mapping,
-      parameters.contact.secondary_boundary_id);
-    primary = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler,
-      mapping,
-      parameters.contact.primary_boundary_id);
-    search =
-      std::make_unique<Common::Contact::ContactSearch<dim>>(*primary, 0.);
-    coupling.reinit(*secondary,
-                    *primary,
-                    *search,
-                    parameters.contact.search_distance);
-    enforcement = std::make_unique<Common::Contact::ContactEnforcement<dim>>(
-      parameters.contact,
-      coupling,
-      parameters.block_material.youngs_modulus);
-    enforcement->initialize_active_set();
-    contact_setup_time = seconds_since(start);
-  }
-
-
-
-  // One sparsity pattern serves every active set: it holds the couplings
-  // that any active node's constraint (or penalty term) can create.
-  template <int dim>
-  void
-  RollerProblem<dim>::setup_sparsity()
-  {
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    constraints_dirichlet_and_hanging_nodes,
-                                    true,
-                                    Utilities::MPI::this_mpi_process(
-                                      mpi_communicator));
-    enforcement->add_sparsity_entries(dof_handler,
-                                      constraints_dirichlet_and_hanging_nodes,
-                                      dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
-  }
-
-
-
-  // One semismooth Newton iteration: Dirichlet constraints and, for
-  // Lagrange multipliers, one condensed constraint per active node; bulk
-  // tangent and residual; the point load; penalty terms if selected.
-  template <int dim>
-  void
-  RollerProblem<dim>::assemble_and_solve(const double load_factor)
-  {
-    const auto t_assemble = std::chrono::steady_clock::now();
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    constraints.merge(constraints_dirichlet_and_hanging_nodes);
-    if (parameters.contact.enforcement ==
-        Common::Contact::Enforcement::lagrange_multiplier)
-      enforcement->add_constraints(constraints, solution);
-    constraints.close();
-
-    system_matrix = 0.;
-    system_rhs    = 0.;
-    physics->assemble_system(dof_handler,
-                             constraints,
-                             solution,
-                             system_matrix,
-                             system_rhs);
-    if (locally_owned_dofs.is_element(load_dof))
-      {
-        Vector<double> load(1);
-        load(0) = -0.5 * load_factor * parameters.loading.force_per_thickness;
-        constraints.distribute_local_to_global(
-          load,
-          std::vector<types::global_dof_index>{load_dof},
-          system_rhs);
-      }
-    if (parameters.contact.enforcement == Common::Contact::Enforcement::penalty)
-      enforcement->assemble_penalty(constraints,
-                                    solution,
-                                    locally_owned_dofs,
-                                    system_matrix,
-                                    system_rhs);
-    system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-
-    assembly_time += seconds_since(t_assemble);
-    const auto t_solve = std::chrono::steady_clock::now();
-    newton_update      = 0.;
-    linear_solver.solve(system_matrix, newton_update, system_rhs);
-    constraints.distribute(newton_update);
-    linear_solve_time += seconds_since(t_solve);
-    solution_owned += newton_update;
-    solution = solution_owned;
-  }
-
-
-
-  // Residuals of the updated state: equilibrium including the contact
-  // forces of the recovered pressures, and the complementarity function,
-  // both relative to the applied force.
-  template <int dim>
-  Common::Solvers::NewtonResidual
-  RollerProblem<dim>::evaluate_residual(const double load_factor)
-  {
-    const auto   start = std::chrono::steady_clock::now();
-    const double applied =
-      0.5 * load_factor * parameters.loading.force_per_thickness;
-
-    // Residual of the free DoFs, f_ext - f_int, condensed as the linear
-    // system is: hanging-node forces on their parents (a secondary node may
-    // be one), Dirichlet rows zero (reactions at the symmetry lines are no
-    // contact tractions).
-    TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
-    physics->assemble_internal_force(dof_handler,
-                                     constraints_dirichlet_and_hanging_nodes,
-                                     solution,
-                                     r);
-    r.compress(VectorOperation::add);
-    r *= -1.;
-    // The loaded vertex is neither constrained nor hanging.
-    if (locally_owned_dofs.is_element(load_dof))
-      r(load_dof) -= applied;
-    bulk_residual = r;
-
-    enforcement->update_pressures(solution, bulk_residual);
-    enforcement->add_contact_forces(locally_owned_dofs, r);
-    r.compress(VectorOperation::add);
-    constraints_dirichlet_and_hanging_nodes.set_zero(r);
-
-    Common::Solvers::NewtonResidual residual;
-    residual.equilibrium = r.l2_norm() / applied;
-    residual.complementarity =
-      enforcement->complementarity_norm(solution) / applied;
-    residual_time += seconds_since(start);
-    return residual;
-  }
-
-
-
-  template <int dim>
-  Common::Solvers::NewtonStatistics
-  RollerProblem<dim>::solve_load_step(const double load_factor)
-  {
-    enforcement->begin_step();
-    Common::Solvers::NewtonCallbacks callbacks;
-    callbacks.assemble_solve_and_update = [&]() {
-      assemble_and_solve(load_factor);
+    const double force = 0.5 * parameters.loading.force_per_thickness;
+    const types::global_dof_index dof = load_dof;
+    const bool owned = dof_handler.locally_owned_dofs().is_element(dof);
+    Common::Problems::ExternalLoad load;
+    load.add = [force, dof, owned](const double                     load_factor,
+                                   const AffineConstraints<double> &c,
+                                   TrilinosWrappers::MPI::Vector   &vector) {
+      if (owned)
+        {
+          Vector<double> f(1);
+          f(0) = -load_factor * force;
+          c.distribute_local_to_global(f,
+                                       std::vector<types::global_dof_index>{
+                                         dof},
+                                       vector);
+        }
     };
-    callbacks.evaluate_residual = [&]() {
-      return evaluate_residual(load_factor);
+    load.magnitude = [force](const double load_factor) {
+      return load_factor * force;
     };
-    callbacks.update_active_set = [&]() {
-      const auto         start     = std::chrono::steady_clock::now();
-      const unsigned int n_changed = enforcement->update_active_set(solution);
-      active_set_time += seconds_since(start);
-      return n_changed;
-    };
-    callbacks.is_cycling = [&]() {
-      return enforcement->is_cycling();
-    };
-
-    Common::Solvers::NonlinearSolverParameters newton =
-      parameters.nonlinear_solver;
-    newton.max_iterations =
-      std::min(newton.max_iterations,
-               parameters.contact.max_active_set_iterations);
-    return Common::Solvers::solve_newton(newton,
-                                         callbacks,
-                                         console.stream(
-                                           Common::IO::Verbosity::verbose));
+    return load;
   }
 
 
@@ -417,6 +251,9 @@ namespace CgsRoller
     const double                             load_factor,
     const Common::Solvers::NewtonStatistics &statistics)
   {
+    const auto &coupling      = contact_problem->coupling();
+    const auto &enforcement   = contact_problem->enforcement();
+    const auto &bulk_residual = contact_problem->bulk_residual();
     const Common::Analytic::HertzLineContact hertz(
       parameters.roller_material.youngs_modulus,
       parameters.roller_material.poisson_ratio,
@@ -425,13 +262,15 @@ namespace CgsRoller
       parameters.geometry.roller_radius,
       load_factor * parameters.loading.force_per_thickness);
 
-    const auto   profile = Common::Contact::contact_profile(coupling,
-                                                          *enforcement,
-                                                          solution,
-                                                          bulk_residual,
-                                                          0);
+    const auto profile =
+      Common::Contact::contact_profile(coupling,
+                                       enforcement,
+                                       contact_problem->displacement(),
+                                       bulk_residual,
+                                       0);
     const double force =
-      Common::Contact::total_contact_force(coupling, *enforcement)[1];
+      Common::Contact::total_contact_force(contact_problem->coupling(),
+                                           contact_problem->enforcement())[1];
     const double applied =
       0.5 * load_factor * parameters.loading.force_per_thickness;
     double peak = 0.;
@@ -445,7 +284,7 @@ namespace CgsRoller
                      << ", load factor "
                      << Common::IO::Console::format(load_factor)
                      << ": Newton iterations " << statistics.n_iterations
-                     << ", active contact nodes " << enforcement->n_active()
+                     << ", active contact nodes " << enforcement.n_active()
                      << std::endl;
     console.print_quantity("Contact force, half model",
                            "N/mm",
@@ -462,30 +301,10 @@ namespace CgsRoller
                            peak,
                            "p0/p0_Hertz",
                            peak / hertz.peak_pressure());
-    if (enforcement->touches_search_edge())
+    if (enforcement.touches_search_edge())
       console.stream() << "  Warning: the contact zone reaches the edge of "
                           "the search region; increase 'Search distance'."
                        << std::endl;
-  }
-
-
-
-  // The least any contact solver must pay: one assembly (cell matrices
-  // included) and one linear solve of the same system with the converged
-  // active set held fixed.
-  template <int dim>
-  double
-  RollerProblem<dim>::measure_fixed_active_set_solve()
-  {
-    const TrilinosWrappers::MPI::Vector converged = solution_owned;
-    physics->clear();
-    linear_solver.reset();
-    const auto start = std::chrono::steady_clock::now();
-    assemble_and_solve(1.);
-    const double time = seconds_since(start);
-    solution_owned    = converged;
-    solution          = solution_owned;
-    return time;
   }
 
 
@@ -495,7 +314,10 @@ namespace CgsRoller
   RollerProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
-    const auto &out  = parameters.output;
+    const auto &coupling      = contact_problem->coupling();
+    const auto &enforcement   = contact_problem->enforcement();
+    const auto &bulk_residual = contact_problem->bulk_residual();
+    const auto &out           = parameters.output;
     const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
 
     const Common::Analytic::HertzLineContact hertz(
@@ -506,22 +328,24 @@ namespace CgsRoller
       parameters.geometry.roller_radius,
       parameters.loading.force_per_thickness);
 
-    const auto profile = Common::Contact::contact_profile(coupling,
-                                                          *enforcement,
-                                                          solution,
-                                                          bulk_residual,
-                                                          0);
-    double     peak    = 0.;
+    const auto profile =
+      Common::Contact::contact_profile(coupling,
+                                       enforcement,
+                                       contact_problem->displacement(),
+                                       bulk_residual,
+                                       0);
+    double peak = 0.;
     for (const auto &p : profile)
       peak = std::max(peak, p.pressure);
     const double half_width = Common::Contact::contact_extent(profile, 0);
     const double force =
-      -Common::Contact::total_contact_force(coupling, *enforcement)[1];
+      -Common::Contact::total_contact_force(contact_problem->coupling(),
+                                            contact_problem->enforcement())[1];
     const double applied        = 0.5 * parameters.loading.force_per_thickness;
     double       reference_norm = 0.;
     const double l2_error       = Common::Contact::pressure_l2_error<dim>(
       coupling,
-      *enforcement,
+      enforcement,
       [&hertz](const Point<dim> &x) { return hertz.pressure(x[0]); },
       reference_norm);
 
@@ -615,7 +439,7 @@ namespace CgsRoller
       .set("applied_force_half_model_N_per_mm", applied)
       .set("force_balance_relative_error", std::abs(force - applied) / applied)
       .set("pressure_l2_relative_error", l2_error / reference_norm)
-      .set("n_active_nodes", enforcement->n_active());
+      .set("n_active_nodes", enforcement.n_active());
 
     JsonObject reference;
     reference.set("source", "Hertz line contact, plane strain")
@@ -651,19 +475,18 @@ namespace CgsRoller
                      << std::endl;
     make_grid();
     setup_system();
-    setup_contact();
-    setup_sparsity();
-    unsigned int n_paired = 0;
+    unsigned int n_paired    = 0;
+    const auto  &coupling    = contact_problem->coupling();
+    const auto  &enforcement = contact_problem->enforcement();
     for (unsigned int j = 0; j < coupling.n_rows(); ++j)
       n_paired += coupling.row(j).has_partner;
     console.stream() << "Mesh: " << triangulation.n_active_cells()
                      << " active cells, " << dof_handler.n_dofs()
                      << " degrees of freedom, Q"
                      << parameters.mesh.element_degree << std::endl
-                     << "Contact: " << secondary->n_nodes()
-                     << " secondary nodes, " << n_paired << " paired, "
-                     << enforcement->n_active() << " initially closed"
-                     << std::endl;
+                     << "Contact: " << coupling.n_rows() << " secondary nodes, "
+                     << n_paired << " paired, " << enforcement.n_active()
+                     << " initially closed" << std::endl;
     timings.set("setup_s", seconds_since(start));
     if (parameters.run_control.dry_run)
       {
@@ -693,28 +516,28 @@ namespace CgsRoller
                                                     mpi_communicator);
     const Common::Physics::StressPostprocessor<dim> stress(*physics);
 
-    Common::Solvers::LoadStepCallbacks callbacks;
+    const Common::Problems::ExternalLoad load = external_load();
+    Common::Solvers::LoadStepCallbacks   callbacks;
     callbacks.solve = [&](const double load_factor) {
-      const auto start      = std::chrono::steady_clock::now();
-      const auto statistics = solve_load_step(load_factor);
-      contact_solve_time += seconds_since(start);
-      return statistics;
+      return contact_problem->solve(load_factor,
+                                    load,
+                                    console.stream(
+                                      Common::IO::Verbosity::verbose));
     };
     callbacks.accept = [&](const unsigned int                       step,
                            const double                             load,
                            const Common::Solvers::NewtonStatistics &stats) {
-      accepted_solution = solution_owned;
-      enforcement->commit();
+      contact_problem->commit();
       postprocess_step(step, load, stats);
       if (out.write_graphical_output)
         {
           Common::IO::NodalScalarField pressure{"contact_pressure", {}};
           for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-            pressure.values[secondary->node(j).dofs[0]] =
-              enforcement->pressure(j);
+            pressure.values[coupling.secondary_surface().node(j).dofs[0]] =
+              enforcement.pressure(j);
           solution_output.write(dof_handler,
                                 mapping,
-                                solution,
+                                contact_problem->displacement(),
                                 {&stress},
                                 {pressure},
                                 load,
@@ -722,9 +545,7 @@ namespace CgsRoller
         }
     };
     callbacks.reject = [&]() {
-      solution_owned = accepted_solution;
-      solution       = solution_owned;
-      enforcement->restore();
+      contact_problem->restore();
     };
 
     const auto solve_start = std::chrono::steady_clock::now();
@@ -732,18 +553,20 @@ namespace CgsRoller
       Common::Solvers::run_load_stepping(parameters.load_stepping,
                                          callbacks,
                                          console);
-    contact_solve_time += contact_setup_time;
-    timings.set("contact_setup_s", contact_setup_time)
+    const auto  &times              = contact_problem->times();
+    const double contact_solve_time = times.contact_setup + times.newton;
+    timings.set("contact_setup_s", times.contact_setup)
       .set("contact_solve_s", contact_solve_time)
       .set("load_stepping_s", seconds_since(solve_start))
-      .set("assembly_s", assembly_time)
-      .set("linear_solve_s", linear_solve_time)
-      .set("residual_s", residual_time)
-      .set("active_set_update_s", active_set_time);
+      .set("assembly_s", times.assembly)
+      .set("linear_solve_s", times.linear_solve)
+      .set("residual_s", times.residual)
+      .set("active_set_update_s", times.active_set_update);
 
     if (parameters.run_control.measure_contact_cost)
       {
-        const double reference = measure_fixed_active_set_solve();
+        const double reference =
+          contact_problem->time_fixed_active_set_solve(1., load);
         timings.set("fixed_active_set_solve_s", reference)
           .set("contact_cost_ratio", contact_solve_time / reference);
         console.stream() << "Cost of contact: " << std::fixed

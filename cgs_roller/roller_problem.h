@@ -7,14 +7,10 @@
 #define cgs_roller_roller_problem_h
 
 #include <common/analytic/hertz.h>
-#include <common/contact/contact_enforcement.h>
-#include <common/contact/contact_search.h>
-#include <common/contact/contact_surface.h>
-#include <common/contact/mortar_coupling.h>
 #include <common/io/console.h>
 #include <common/io/json_writer.h>
 #include <common/physics/small_strain_elasticity.h>
-#include <common/solvers/linear_solver.h>
+#include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/load_stepping.h>
 
 #include "parameters.h"
@@ -25,8 +21,6 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
 
@@ -71,22 +65,12 @@ namespace CgsRoller
     make_grid();
     void
     setup_system();
-    void
-    setup_contact();
-    void
-    setup_sparsity();
-    Common::Solvers::NewtonStatistics
-    solve_load_step(const double load_factor);
-    void
-    assemble_and_solve(const double load_factor);
-    Common::Solvers::NewtonResidual
-    evaluate_residual(const double load_factor);
+    Common::Problems::ExternalLoad
+    external_load() const;
     void
     postprocess_step(const unsigned int                       step,
                      const double                             load_factor,
                      const Common::Solvers::NewtonStatistics &statistics);
-    double
-    measure_fixed_active_set_solve();
     void
     output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
 
@@ -96,44 +80,20 @@ namespace CgsRoller
     Common::IO::Console console;
 
     // Discretisation
-    parallel::shared::Triangulation<dim> triangulation;
-    const FESystem<dim>                  fe;
-    const MappingQ<dim>                  mapping;
-    DoFHandler<dim>                      dof_handler;
-    IndexSet                             locally_owned_dofs;
-    IndexSet                             locally_relevant_dofs;
-    types::global_dof_index              load_dof;
+    parallel::shared::Triangulation<dim>                         triangulation;
+    const FESystem<dim>                                          fe;
+    const MappingQ<dim>                                          mapping;
+    DoFHandler<dim>                                              dof_handler;
+    types::global_dof_index                                      load_dof;
     std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
 
-    // Contact
-    std::unique_ptr<Common::Contact::ContactSurface<dim>>     primary;
-    std::unique_ptr<Common::Contact::ContactSurface<dim>>     secondary;
-    std::unique_ptr<Common::Contact::ContactSearch<dim>>      search;
-    Common::Contact::MortarCoupling<dim>                      coupling;
-    std::unique_ptr<Common::Contact::ContactEnforcement<dim>> enforcement;
-
-    // Linear algebra
-    AffineConstraints<double>      constraints_dirichlet_and_hanging_nodes;
-    AffineConstraints<double>      constraints;
-    TrilinosWrappers::SparseMatrix system_matrix;
-    TrilinosWrappers::MPI::Vector  solution;
-    TrilinosWrappers::MPI::Vector  solution_owned;
-    TrilinosWrappers::MPI::Vector  accepted_solution;
-    TrilinosWrappers::MPI::Vector  newton_update;
-    TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::MPI::Vector  bulk_residual;
-    // Declared after the matrix: it refers to it and goes first.
-    Common::Solvers::LinearSolver linear_solver;
+    // Contact problem and its state
+    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
+    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
+      contact_problem;
 
     // Results
-    std::vector<unsigned int> iterations_per_step;
-    Common::IO::JsonObject    timings;
-    double                    contact_setup_time;
-    double                    contact_solve_time;
-    double                    assembly_time;
-    double                    linear_solve_time;
-    double                    residual_time;
-    double                    active_set_time;
+    Common::IO::JsonObject timings;
   };
 } // namespace CgsRoller
 

@@ -20,16 +20,12 @@
  * one to 1e-8 relative.
  */
 
-#include <common/contact/contact_enforcement.h>
 #include <common/contact/contact_parameters.h>
 #include <common/contact/contact_postprocessor.h>
-#include <common/contact/contact_search.h>
-#include <common/contact/contact_surface.h>
-#include <common/contact/mortar_coupling.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/materials/linear_elastic.h>
 #include <common/physics/small_strain_elasticity.h>
-#include <common/solvers/linear_solver.h>
+#include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/newton_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -48,9 +44,6 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -130,49 +123,27 @@ namespace
     void
     setup_system();
     void
-    setup_contact();
-    void
-    setup_sparsity();
-    void
-    assemble_load(const AffineConstraints<double> &c,
+    assemble_load(const double                     load_factor,
+                  const AffineConstraints<double> &c,
                   TrilinosWrappers::MPI::Vector   &rhs) const;
-    void
-    assemble_and_solve();
-    Common::Solvers::NewtonResidual
-    evaluate_residual();
     void
     check_results(const Common::Solvers::NewtonStatistics &statistics);
 
     const unsigned int degree;
     MPI_Comm           mpi_communicator;
 
-    parallel::shared::Triangulation<dim> triangulation;
-    const FESystem<dim>                  fe;
-    const MappingQ<dim>                  mapping;
-    DoFHandler<dim>                      dof_handler;
-    IndexSet                             locally_owned_dofs;
-    IndexSet                             locally_relevant_dofs;
+    parallel::shared::Triangulation<dim>                         triangulation;
+    const FESystem<dim>                                          fe;
+    const MappingQ<dim>                                          mapping;
+    DoFHandler<dim>                                              dof_handler;
     std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
 
-    Common::Contact::ContactParameters                        contact;
-    std::unique_ptr<Common::Contact::ContactSurface<dim>>     primary;
-    std::unique_ptr<Common::Contact::ContactSurface<dim>>     secondary;
-    std::unique_ptr<Common::Contact::ContactSearch<dim>>      search;
-    Common::Contact::MortarCoupling<dim>                      coupling;
-    std::unique_ptr<Common::Contact::ContactEnforcement<dim>> enforcement;
-
-    AffineConstraints<double>      constraints_dirichlet_and_hanging_nodes;
-    AffineConstraints<double>      constraints;
-    TrilinosWrappers::SparseMatrix system_matrix;
-    TrilinosWrappers::MPI::Vector  solution;
-    TrilinosWrappers::MPI::Vector  solution_owned;
-    TrilinosWrappers::MPI::Vector  newton_update;
-    TrilinosWrappers::MPI::Vector  system_rhs;
-    TrilinosWrappers::MPI::Vector  bulk_residual;
-    // Declared after the matrix and vectors: Amesos_Mumps refers to the
-    // matrix's communicator when it is destroyed, so the solver must go
-    // first.
-    std::unique_ptr<Common::Solvers::LinearSolver> linear_solver;
+    Common::Contact::ContactParameters         contact;
+    Common::Solvers::LinearSolverParameters    solver_parameters;
+    Common::Solvers::NonlinearSolverParameters newton_parameters;
+    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
+    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
+      contact_problem;
   };
 
 
@@ -196,12 +167,11 @@ namespace
     contact.max_active_set_iterations = 10;
     contact.accelerate_release        = true;
 
-    Common::Solvers::LinearSolverParameters solver_parameters;
     solver_parameters.type           = Common::Solvers::LinearSolverType::mumps;
     solver_parameters.tolerance      = 1e-12;
     solver_parameters.max_iterations = 1000;
-    linear_solver =
-      std::make_unique<Common::Solvers::LinearSolver>(solver_parameters);
+    newton_parameters.max_iterations = contact.max_active_set_iterations;
+    newton_parameters.tolerance      = 1e-10;
   }
 
 
@@ -256,11 +226,9 @@ namespace
   PatchTest<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
-    locally_owned_dofs    = dof_handler.locally_owned_dofs();
-    locally_relevant_dofs = complete_index_set(dof_handler.n_dofs());
-
     constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
+    constraints_dirichlet_and_hanging_nodes.reinit(
+      complete_index_set(dof_handler.n_dofs()));
     DoFTools::make_hanging_node_constraints(
       dof_handler,
       constraints_dirichlet_and_hanging_nodes);
@@ -301,74 +269,28 @@ namespace
                                                                     fe,
                                                                     materials);
 
-    solution.reinit(locally_owned_dofs,
-                    locally_relevant_dofs,
-                    mpi_communicator);
-    solution_owned.reinit(locally_owned_dofs, mpi_communicator);
-    newton_update.reinit(locally_owned_dofs, mpi_communicator);
-    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-    bulk_residual.reinit(locally_owned_dofs,
-                         locally_relevant_dofs,
-                         mpi_communicator);
-  }
-
-
-
-  template <int dim>
-  void
-  PatchTest<dim>::setup_contact()
-  {
-    secondary = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler,
-      mapping,
-      contact.secondary_boundary_id);
-    primary = std::make_unique<Common::Contact::ContactSurface<dim>>(
-      dof_handler,
-      mapping,
-      contact.primary_boundary_id);
-    search =
-      std::make_unique<Common::Contact::ContactSearch<dim>>(*primary, 0.);
-    coupling.reinit(*secondary, *primary, *search, contact.search_distance);
-    enforcement =
-      std::make_unique<Common::Contact::ContactEnforcement<dim>>(contact,
-                                                                 coupling,
-                                                                 E_lower);
-    enforcement->initialize_active_set();
-  }
-
-
-
-  template <int dim>
-  void
-  PatchTest<dim>::setup_sparsity()
-  {
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    constraints_dirichlet_and_hanging_nodes,
-                                    true,
-                                    Utilities::MPI::this_mpi_process(
-                                      mpi_communicator));
-    enforcement->add_sparsity_entries(dof_handler,
-                                      constraints_dirichlet_and_hanging_nodes,
-                                      dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
+    contact_problem =
+      std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
+        dof_handler,
+        mapping,
+        *physics,
+        contact,
+        solver_parameters,
+        newton_parameters,
+        E_lower,
+        mpi_communicator);
+    contact_problem->setup(constraints_dirichlet_and_hanging_nodes);
   }
 
 
 
   // Consistent nodal forces of the uniform pressure on the top of the upper
-  // block, traction t = (0, -p), distributed through @p c. Not compressed.
+  // block, traction t = (0, -p) times the load factor, distributed through
+  // @p c. Not compressed.
   template <int dim>
   void
-  PatchTest<dim>::assemble_load(const AffineConstraints<double> &c,
+  PatchTest<dim>::assemble_load(const double                     load_factor,
+                                const AffineConstraints<double> &c,
                                 TrilinosWrappers::MPI::Vector   &rhs) const
   {
     const QGauss<dim - 1>                face_quadrature(degree + 1);
@@ -380,7 +302,7 @@ namespace
     Vector<double>                       cell_rhs(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     Tensor<1, dim>                       traction;
-    traction[1] = -pressure_load;
+    traction[1] = -load_factor * pressure_load;
     const FEValuesExtractors::Vector displacement(0);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -405,74 +327,14 @@ namespace
 
   template <int dim>
   void
-  PatchTest<dim>::assemble_and_solve()
-  {
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    constraints.merge(constraints_dirichlet_and_hanging_nodes);
-    enforcement->add_constraints(constraints, solution);
-    constraints.close();
-
-    system_matrix = 0.;
-    system_rhs    = 0.;
-    physics->assemble_system(dof_handler,
-                             constraints,
-                             solution,
-                             system_matrix,
-                             system_rhs);
-    assemble_load(constraints, system_rhs);
-    system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-
-    newton_update = 0.;
-    linear_solver->solve(system_matrix, newton_update, system_rhs);
-    constraints.distribute(newton_update);
-    solution_owned += newton_update;
-    solution = solution_owned;
-  }
-
-
-
-  template <int dim>
-  Common::Solvers::NewtonResidual
-  PatchTest<dim>::evaluate_residual()
-  {
-    const double applied = pressure_load * interface_length;
-
-    // Residual of the free DoFs, f_ext - f_int, condensed as the linear
-    // system is: hanging-node forces on their parents, Dirichlet rows zero
-    // (reactions at the supports are no contact tractions).
-    TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
-    physics->assemble_internal_force(dof_handler,
-                                     constraints_dirichlet_and_hanging_nodes,
-                                     solution,
-                                     r);
-    r.compress(VectorOperation::add);
-    r *= -1.;
-    assemble_load(constraints_dirichlet_and_hanging_nodes, r);
-    r.compress(VectorOperation::add);
-    bulk_residual = r;
-
-    enforcement->update_pressures(solution, bulk_residual);
-    enforcement->add_contact_forces(locally_owned_dofs, r);
-    r.compress(VectorOperation::add);
-    constraints_dirichlet_and_hanging_nodes.set_zero(r);
-
-    Common::Solvers::NewtonResidual residual;
-    residual.equilibrium = r.l2_norm() / applied;
-    residual.complementarity =
-      enforcement->complementarity_norm(solution) / applied;
-    return residual;
-  }
-
-
-
-  template <int dim>
-  void
   PatchTest<dim>::check_results(
     const Common::Solvers::NewtonStatistics &statistics)
   {
-    const double p = pressure_load;
+    const auto  &coupling      = contact_problem->coupling();
+    const auto  &enforcement   = contact_problem->enforcement();
+    const auto  &solution      = contact_problem->displacement();
+    const auto  &bulk_residual = contact_problem->bulk_residual();
+    const double p             = pressure_load;
 
     // (a) Nodal pressures.
     unsigned int n_paired      = 0;
@@ -480,17 +342,17 @@ namespace
     for (unsigned int j = 0; j < coupling.n_rows(); ++j)
       {
         n_paired += coupling.row(j).has_partner;
-        if (!enforcement->is_active(j))
+        if (!enforcement.is_active(j))
           continue;
-        const double pj = enforcement->pressure(j);
+        const double pj = enforcement.pressure(j);
         sum += pj;
         max_deviation = std::max(max_deviation, std::abs(pj - p) / p);
       }
-    const unsigned int n_active = enforcement->n_active();
+    const unsigned int n_active = enforcement.n_active();
     const double       mean     = n_active > 0 ? sum / n_active : 0.;
-    const bool all_active = n_active == secondary->n_nodes() && n_active > 0;
-    const bool pressures_exact = max_deviation < 1e-8;
-    deallog << "Secondary nodes " << secondary->n_nodes() << ", paired "
+    const bool all_active       = n_active == coupling.n_rows() && n_active > 0;
+    const bool pressures_exact  = max_deviation < 1e-8;
+    deallog << "Secondary nodes " << coupling.n_rows() << ", paired "
             << n_paired << ", active " << n_active << std::endl;
     deallog << "All secondary nodes active: " << yes_no(all_active)
             << std::endl;
@@ -539,7 +401,7 @@ namespace
 
     // (c) Total contact force on the secondary surface: (0, -p L).
     const Tensor<1, dim> force =
-      Common::Contact::total_contact_force(coupling, *enforcement);
+      Common::Contact::total_contact_force(coupling, enforcement);
     const double applied     = p * interface_length;
     const bool   force_exact = std::abs(force[1] + applied) / applied < 1e-10 &&
                              std::abs(force[0]) / applied < 1e-10;
@@ -563,7 +425,7 @@ namespace
     const double slip_rate =
       poisson_ratio * (1. + poisson_ratio) * p * (1. / E_upper - 1. / E_lower);
     const auto profile      = Common::Contact::contact_profile(coupling,
-                                                          *enforcement,
+                                                          enforcement,
                                                           solution,
                                                           bulk_residual,
                                                           0);
@@ -599,37 +461,27 @@ namespace
   {
     make_grid();
     setup_system();
-    setup_contact();
-    setup_sparsity();
     deallog << "Q" << degree << ": " << triangulation.n_active_cells()
             << " cells, " << dof_handler.n_dofs() << " DoFs, "
-            << secondary->n_faces() << " secondary and " << primary->n_faces()
+            << contact_problem->coupling().secondary_surface().n_faces()
+            << " secondary and "
+            << contact_problem->coupling().primary_surface().n_faces()
             << " primary faces" << std::endl;
 
-    enforcement->begin_step();
-    Common::Solvers::NewtonCallbacks callbacks;
-    callbacks.assemble_solve_and_update = [&]() {
-      assemble_and_solve();
+    Common::Problems::ExternalLoad load;
+    load.add = [this](const double                     load_factor,
+                      const AffineConstraints<double> &c,
+                      TrilinosWrappers::MPI::Vector   &vector) {
+      assemble_load(load_factor, c, vector);
     };
-    callbacks.evaluate_residual = [&]() {
-      return evaluate_residual();
+    load.magnitude = [](const double load_factor) {
+      return load_factor * pressure_load * interface_length;
     };
-    callbacks.update_active_set = [&]() {
-      return enforcement->update_active_set(solution);
-    };
-    callbacks.is_cycling = [&]() {
-      return enforcement->is_cycling();
-    };
-
-    Common::Solvers::NonlinearSolverParameters newton;
-    newton.max_iterations = contact.max_active_set_iterations;
-    newton.tolerance      = 1e-10;
     ConditionalOStream quiet(std::cout, false);
-    const auto         statistics =
-      Common::Solvers::solve_newton(newton, callbacks, quiet);
+    const auto         statistics = contact_problem->solve(1., load, quiet);
     if (!statistics.converged)
       deallog << "Newton failure: " << statistics.failure << std::endl;
-    enforcement->commit();
+    contact_problem->commit();
     check_results(statistics);
   }
 } // namespace
