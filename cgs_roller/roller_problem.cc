@@ -11,6 +11,7 @@
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
 #include <common/io/solution_output.h>
+#include <common/io/timer.h>
 #include <common/solvers/linear_solver.h>
 
 #include <deal.II/base/function.h>
@@ -28,19 +29,6 @@
 
 namespace CgsRoller
 {
-  namespace
-  {
-    double
-    seconds_since(const std::chrono::steady_clock::time_point &start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                           start)
-        .count();
-    }
-  } // namespace
-
-
-
   template <int dim>
   RollerProblem<dim>::RollerProblem(const Parameters &parameters)
     : parameters(parameters)
@@ -245,63 +233,69 @@ namespace CgsRoller
 
 
   template <int dim>
+  typename RollerProblem<dim>::Results
+  RollerProblem<dim>::evaluate_results(const double load_factor) const
+  {
+    const double force = load_factor * parameters.loading.force_per_thickness;
+    Results      r{Common::Analytic::HertzLineContact(
+                parameters.roller_material.youngs_modulus,
+                parameters.roller_material.poisson_ratio,
+                parameters.block_material.youngs_modulus,
+                parameters.block_material.poisson_ratio,
+                parameters.geometry.roller_radius,
+                force),
+              Common::Contact::contact_profile(contact_problem->coupling(),
+                                               contact_problem->enforcement(),
+                                               contact_problem->displacement(),
+                                               contact_problem->bulk_residual(),
+                                               0),
+              0.,
+              0.,
+              0.,
+              0.5 * force};
+    for (const auto &p : r.profile)
+      r.peak_pressure = std::max(r.peak_pressure, p.pressure);
+    r.half_width = Common::Contact::contact_extent(r.profile, 0);
+    r.contact_force =
+      -Common::Contact::total_contact_force(contact_problem->coupling(),
+                                            contact_problem->enforcement())[1];
+    return r;
+  }
+
+
+
+  template <int dim>
   void
   RollerProblem<dim>::postprocess_step(
     const unsigned int                       step,
     const double                             load_factor,
     const Common::Solvers::NewtonStatistics &statistics)
   {
-    const auto &coupling      = contact_problem->coupling();
-    const auto &enforcement   = contact_problem->enforcement();
-    const auto &bulk_residual = contact_problem->bulk_residual();
-    const Common::Analytic::HertzLineContact hertz(
-      parameters.roller_material.youngs_modulus,
-      parameters.roller_material.poisson_ratio,
-      parameters.block_material.youngs_modulus,
-      parameters.block_material.poisson_ratio,
-      parameters.geometry.roller_radius,
-      load_factor * parameters.loading.force_per_thickness);
-
-    const auto profile =
-      Common::Contact::contact_profile(coupling,
-                                       enforcement,
-                                       contact_problem->displacement(),
-                                       bulk_residual,
-                                       0);
-    const double force =
-      Common::Contact::total_contact_force(contact_problem->coupling(),
-                                           contact_problem->enforcement())[1];
-    const double applied =
-      0.5 * load_factor * parameters.loading.force_per_thickness;
-    double peak = 0.;
-    for (const auto &p : profile)
-      peak = std::max(peak, p.pressure);
-    const double half_width = Common::Contact::contact_extent(profile, 0);
-
+    const Results r = evaluate_results(load_factor);
     // Step counts beyond the nominal number come from cutbacks.
     console.stream() << "Load step " << step << " of "
                      << std::max(step, parameters.load_stepping.n_steps)
                      << ", load factor "
                      << Common::IO::Console::format(load_factor)
                      << ": Newton iterations " << statistics.n_iterations
-                     << ", active contact nodes " << enforcement.n_active()
-                     << std::endl;
+                     << ", active contact nodes "
+                     << contact_problem->enforcement().n_active() << std::endl;
     console.print_quantity("Contact force, half model",
                            "N/mm",
-                           -force,
+                           r.contact_force,
                            "F/F_applied",
-                           -force / applied);
+                           r.contact_force / r.applied_force);
     console.print_quantity("Contact half-width a",
                            "mm",
-                           half_width,
+                           r.half_width,
                            "a/a_Hertz",
-                           half_width / hertz.half_width());
+                           r.half_width / r.hertz.half_width());
     console.print_quantity("Peak pressure p0",
                            "MPa",
-                           peak,
+                           r.peak_pressure,
                            "p0/p0_Hertz",
-                           peak / hertz.peak_pressure());
-    if (enforcement.touches_search_edge())
+                           r.peak_pressure / r.hertz.peak_pressure());
+    if (contact_problem->enforcement().touches_search_edge())
       console.stream() << "  Warning: the contact zone reaches the edge of "
                           "the search region; increase 'Search distance'."
                        << std::endl;
@@ -314,36 +308,19 @@ namespace CgsRoller
   RollerProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
-    const auto &coupling      = contact_problem->coupling();
-    const auto &enforcement   = contact_problem->enforcement();
-    const auto &bulk_residual = contact_problem->bulk_residual();
-    const auto &out           = parameters.output;
+    const auto &coupling    = contact_problem->coupling();
+    const auto &enforcement = contact_problem->enforcement();
+    const auto &out         = parameters.output;
     const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-
-    const Common::Analytic::HertzLineContact hertz(
-      parameters.roller_material.youngs_modulus,
-      parameters.roller_material.poisson_ratio,
-      parameters.block_material.youngs_modulus,
-      parameters.block_material.poisson_ratio,
-      parameters.geometry.roller_radius,
-      parameters.loading.force_per_thickness);
-
-    const auto profile =
-      Common::Contact::contact_profile(coupling,
-                                       enforcement,
-                                       contact_problem->displacement(),
-                                       bulk_residual,
-                                       0);
-    double peak = 0.;
-    for (const auto &p : profile)
-      peak = std::max(peak, p.pressure);
-    const double half_width = Common::Contact::contact_extent(profile, 0);
-    const double force =
-      -Common::Contact::total_contact_force(contact_problem->coupling(),
-                                            contact_problem->enforcement())[1];
-    const double applied        = 0.5 * parameters.loading.force_per_thickness;
-    double       reference_norm = 0.;
-    const double l2_error       = Common::Contact::pressure_l2_error<dim>(
+    const Results r  = evaluate_results(1.);
+    const auto   &hertz          = r.hertz;
+    const auto   &profile        = r.profile;
+    const double  peak           = r.peak_pressure;
+    const double  half_width     = r.half_width;
+    const double  force          = r.contact_force;
+    const double  applied        = r.applied_force;
+    double        reference_norm = 0.;
+    const double  l2_error       = Common::Contact::pressure_l2_error<dim>(
       coupling,
       enforcement,
       [&hertz](const Point<dim> &x) { return hertz.pressure(x[0]); },
@@ -487,7 +464,7 @@ namespace CgsRoller
                      << "Contact: " << coupling.n_rows() << " secondary nodes, "
                      << n_paired << " paired, " << enforcement.n_active()
                      << " initially closed" << std::endl;
-    timings.set("setup_s", seconds_since(start));
+    timings.set("setup_s", Common::IO::seconds_since(start));
     if (parameters.run_control.dry_run)
       {
         console.stream() << "Dry run: parameters, mesh and contact pairing "
@@ -557,7 +534,7 @@ namespace CgsRoller
     const double contact_solve_time = times.contact_setup + times.newton;
     timings.set("contact_setup_s", times.contact_setup)
       .set("contact_solve_s", contact_solve_time)
-      .set("load_stepping_s", seconds_since(solve_start))
+      .set("load_stepping_s", Common::IO::seconds_since(solve_start))
       .set("assembly_s", times.assembly)
       .set("linear_solve_s", times.linear_solve)
       .set("residual_s", times.residual)
@@ -576,7 +553,7 @@ namespace CgsRoller
                             "held fixed"
                          << std::endl;
       }
-    timings.set("total_s", seconds_since(start));
+    timings.set("total_s", Common::IO::seconds_since(start));
     output_results(stepping);
   }
 

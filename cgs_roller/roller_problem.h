@@ -7,6 +7,7 @@
 #define cgs_roller_roller_problem_h
 
 #include <common/analytic/hertz.h>
+#include <common/contact/contact_postprocessor.h>
 #include <common/io/console.h>
 #include <common/io/json_writer.h>
 #include <common/physics/small_strain_elasticity.h>
@@ -67,6 +68,18 @@ namespace CgsRoller
     setup_system();
     Common::Problems::ExternalLoad
     external_load() const;
+    /** Contact results at a load factor, with the Hertz reference. */
+    struct Results
+    {
+      Common::Analytic::HertzLineContact                    hertz;
+      std::vector<Common::Contact::ContactPointResult<dim>> profile;
+      double peak_pressure; // MPa
+      double half_width;    // mm
+      double contact_force; // N/mm, half model, compressive positive
+      double applied_force; // N/mm, half model
+    };
+    Results
+    evaluate_results(const double load_factor) const;
     void
     postprocess_step(const unsigned int                       step,
                      const double                             load_factor,

@@ -1,3 +1,4 @@
+#include <common/io/timer.h>
 #include <common/problems/small_strain_contact_problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -11,19 +12,6 @@ namespace Common
   namespace Problems
   {
     using namespace dealii;
-
-    namespace
-    {
-      double
-      seconds_since(const std::chrono::steady_clock::time_point &start)
-      {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             start)
-          .count();
-      }
-    } // namespace
-
-
 
     template <int dim>
     SmallStrainContactProblem<dim>::SmallStrainContactProblem(
@@ -93,7 +81,7 @@ namespace Common
                                                            mortar,
                                                            reference_modulus);
       contact_enforcement->initialize_active_set();
-      solve_times.contact_setup = seconds_since(start);
+      solve_times.contact_setup = IO::seconds_since(start);
 
       DynamicSparsityPattern dsp(locally_relevant_dofs);
       DoFTools::make_sparsity_pattern(dof_handler,
@@ -153,13 +141,13 @@ namespace Common
                                               system_rhs);
       system_matrix.compress(VectorOperation::add);
       system_rhs.compress(VectorOperation::add);
-      solve_times.assembly += seconds_since(start);
+      solve_times.assembly += IO::seconds_since(start);
 
       const auto solve_start = std::chrono::steady_clock::now();
       newton_update          = 0.;
       linear_solver.solve(system_matrix, newton_update, system_rhs);
       constraints.distribute(newton_update);
-      solve_times.linear_solve += seconds_since(solve_start);
+      solve_times.linear_solve += IO::seconds_since(solve_start);
       solution_owned += newton_update;
       solution = solution_owned;
     }
@@ -200,7 +188,7 @@ namespace Common
       residual.equilibrium = r.l2_norm() / scale;
       residual.complementarity =
         contact_enforcement->complementarity_norm(solution) / scale;
-      solve_times.residual += seconds_since(start);
+      solve_times.residual += IO::seconds_since(start);
       return residual;
     }
 
@@ -225,7 +213,7 @@ namespace Common
         const auto         t = std::chrono::steady_clock::now();
         const unsigned int n_changed =
           contact_enforcement->update_active_set(solution);
-        solve_times.active_set_update += seconds_since(t);
+        solve_times.active_set_update += IO::seconds_since(t);
         return n_changed;
       };
       callbacks.is_cycling = [&]() {
@@ -237,7 +225,7 @@ namespace Common
         std::min(newton.max_iterations,
                  contact_parameters.max_active_set_iterations);
       const auto statistics = Solvers::solve_newton(newton, callbacks, verbose);
-      solve_times.newton += seconds_since(start);
+      solve_times.newton += IO::seconds_since(start);
       return statistics;
     }
 
@@ -276,7 +264,7 @@ namespace Common
       linear_solver.reset();
       const auto start = std::chrono::steady_clock::now();
       assemble_and_solve(load_factor, load);
-      const double time = seconds_since(start);
+      const double time = IO::seconds_since(start);
       solution_owned    = converged;
       solution          = solution_owned;
       solve_times       = kept;
