@@ -26,6 +26,8 @@
 
 #include <chrono>
 #include <fstream>
+#include <limits>
+#include <sstream>
 
 namespace CgsRoller
 {
@@ -233,6 +235,27 @@ namespace CgsRoller
 
 
   template <int dim>
+  Common::Analytic::SpencePartialSlip
+  RollerProblem<dim>::spence_reference() const
+  {
+    const Common::Analytic::HertzLineContact hertz(
+      parameters.roller_material.youngs_modulus,
+      parameters.roller_material.poisson_ratio,
+      parameters.block_material.youngs_modulus,
+      parameters.block_material.poisson_ratio,
+      parameters.geometry.roller_radius,
+      parameters.loading.force_per_thickness);
+    return Common::Analytic::SpencePartialSlip(
+      hertz.half_width(),
+      hertz.peak_pressure(),
+      parameters.geometry.roller_radius,
+      hertz.dundurs_beta(),
+      parameters.contact.friction_coefficient);
+  }
+
+
+
+  template <int dim>
   typename RollerProblem<dim>::Results
   RollerProblem<dim>::evaluate_results(const double load_factor) const
   {
@@ -252,10 +275,30 @@ namespace CgsRoller
               0.,
               0.,
               0.,
-              0.5 * force};
+              0.5 * force,
+              0.,
+              0.,
+              0.};
     for (const auto &p : r.profile)
-      r.peak_pressure = std::max(r.peak_pressure, p.pressure);
-    r.half_width = Common::Contact::contact_extent(r.profile, 0);
+      {
+        r.peak_pressure = std::max(r.peak_pressure, p.pressure);
+        r.peak_tangential_traction =
+          std::max(r.peak_tangential_traction, std::abs(p.tangential_traction));
+      }
+    r.half_width       = Common::Contact::contact_extent(r.profile, 0);
+    r.stick_half_width = Common::Contact::stick_extent(r.profile, 0);
+    // Accumulated slip at x = a/2, interpolated linearly between nodes.
+    const double x_half = 0.5 * r.half_width;
+    for (unsigned int i = 0; i + 1 < r.profile.size(); ++i)
+      if (r.profile[i].position[0] <= x_half &&
+          r.profile[i + 1].position[0] > x_half)
+        {
+          const double x0 = r.profile[i].position[0];
+          const double x1 = r.profile[i + 1].position[0];
+          r.slip_at_half_contact =
+            r.profile[i].slip + (x_half - x0) / (x1 - x0) *
+                                  (r.profile[i + 1].slip - r.profile[i].slip);
+        }
     r.contact_force =
       -Common::Contact::total_contact_force(contact_problem->coupling(),
                                             contact_problem->enforcement())[1];
@@ -280,6 +323,7 @@ namespace CgsRoller
                      << ": Newton iterations " << statistics.n_iterations
                      << ", active contact nodes "
                      << contact_problem->enforcement().n_active() << std::endl;
+    const bool friction = contact_problem->enforcement().has_friction();
     console.print_quantity("Contact force, half model",
                            "N/mm",
                            r.contact_force,
@@ -295,6 +339,14 @@ namespace CgsRoller
                            r.peak_pressure,
                            "p0/p0_Hertz",
                            r.peak_pressure / r.hertz.peak_pressure());
+    if (friction)
+      console.print_quantity("Stick zone half-width c",
+                             "mm",
+                             r.stick_half_width,
+                             "c/a",
+                             r.half_width > 0. ?
+                               r.stick_half_width / r.half_width :
+                               0.);
     if (contact_problem->enforcement().touches_search_edge())
       console.stream() << "  Warning: the contact zone reaches the edge of "
                           "the search region; increase 'Search distance'."
@@ -336,39 +388,144 @@ namespace CgsRoller
                            "",
                            l2_error / reference_norm);
 
+    const double mu       = parameters.contact.friction_coefficient;
+    const bool   friction = enforcement.has_friction();
+    const Common::Analytic::SpencePartialSlip spence = spence_reference();
+    const bool                                has_slip_table =
+      std::abs(mu - 0.1) < 1e-12 &&
+      std::abs(std::abs(hertz.dundurs_beta()) - 1. / 7.) < 1e-6;
+    const double a_ref = hertz.half_width();
+    // Slip accumulated in contact for mu = 0.1 and beta = 1/7 (tabulated in
+    // REFERENCES.md 1.3, scaled to this load and radius).
+    const std::vector<std::pair<double, double>> spence_slip_table =
+      has_slip_table ? Common::Analytic::spence_slip_table_mu01(
+                         a_ref,
+                         parameters.geometry.roller_radius) :
+                       std::vector<std::pair<double, double>>();
+    // Reference slip at x = a/2 (mm): S0 in closed form without friction,
+    // the tabulated Spence value for mu = 0.1.
+    const double slip_reference =
+      mu == 0.       ? spence.frictionless_slip(0.5 * a_ref) :
+      has_slip_table ? spence_slip_table[5].second :
+                       std::numeric_limits<double>::quiet_NaN();
+
+    if (std::isfinite(slip_reference))
+      console.print_quantity("Slip at x = a/2",
+                             "mm",
+                             r.slip_at_half_contact,
+                             "S/S_ref",
+                             r.slip_at_half_contact / slip_reference);
+    if (friction)
+      {
+        console.print_quantity("Stick ratio c/a",
+                               "",
+                               half_width > 0. ?
+                                 r.stick_half_width / half_width :
+                                 0.,
+                               "Spence",
+                               spence.stick_ratio());
+        console.print_quantity("Peak tangential traction",
+                               "MPa",
+                               r.peak_tangential_traction,
+                               "q/q_Spence",
+                               r.peak_tangential_traction /
+                                 spence.peak_tangential_traction());
+      }
+
     if (root)
       {
         Common::Contact::write_profile_csv(out.path("contact_profile.csv"),
                                            profile,
                                            0);
         std::ofstream reference(out.path("reference_profile.csv"));
-        reference << "x,pressure\n" << std::setprecision(8);
-        const double a = hertz.half_width();
+        reference << "x,pressure,tangential_traction,frictionless_slip,"
+                     "frictionless_relative_displacement,mu_pressure\n"
+                  << std::setprecision(8);
         for (unsigned int i = 0; i <= 400; ++i)
           {
-            const double x = 1.5 * a * i / 400.;
-            reference << x << ',' << hertz.pressure(x) << '\n';
+            const double x = 1.5 * a_ref * i / 400.;
+            reference << x << ',' << hertz.pressure(x) << ','
+                      << spence.tangential_traction(x) << ','
+                      << spence.frictionless_slip(x) << ','
+                      << spence.frictionless_relative_displacement(x) << ','
+                      << mu * hertz.pressure(x) << '\n';
+          }
+        if (has_slip_table)
+          {
+            std::ofstream table(out.path("reference_slip_table.csv"));
+            table << "x,slip\n" << std::setprecision(8);
+            for (const auto &[x, S] : spence_slip_table)
+              table << x << ',' << S << '\n';
           }
       }
 
     if (out.write_plots && root)
       {
-        Common::IO::PlotDescription plot;
-        plot.title   = "Contact pressure, cylinder on block (benchmark 1)";
-        plot.x_label = "x, distance from the contact centre [mm]";
-        plot.y_label = "contact pressure [MPa]";
-        plot.x_range = "[0:" + std::to_string(1.5 * hertz.half_width()) + "]";
-        plot.series  = {{"reference_profile.csv", 1, 2, "Hertz", "lines lw 2"},
-                        {"contact_profile.csv",
-                         1,
-                         2,
-                         "FE, Q" +
-                           std::to_string(parameters.mesh.element_degree),
-                         "linespoints pt 7 ps 0.7"}};
-        if (!Common::IO::write_plot(out.directory, "contact_pressure", plot))
-          console.stream() << "  Note: gnuplot not available; plot script "
-                              "contact_pressure.gp written without PNG."
-                           << std::endl;
+        const std::string fe_label =
+          "FE, Q" + std::to_string(parameters.mesh.element_degree);
+        const std::string  fe_style = "linespoints pt 7 ps 0.5";
+        std::ostringstream mu_stream;
+        mu_stream << mu;
+        const std::string mu_text = mu_stream.str();
+        const std::string x_label = "x, distance from the contact centre "
+                                    "(reference configuration) [mm]";
+        const std::string x_range =
+          "[0:" + std::to_string(1.5 * hertz.half_width()) + "]";
+        std::vector<std::pair<std::string, Common::IO::PlotDescription>> plots;
+
+        Common::IO::PlotDescription pressure;
+        pressure.title   = "Contact pressure, cylinder on block (benchmark 1)";
+        pressure.x_label = x_label;
+        pressure.y_label = "contact pressure [MPa]";
+        pressure.x_range = x_range;
+        pressure.series  = {
+           {"reference_profile.csv", 1, 2, "Hertz", "lines lw 2"},
+           {"contact_profile.csv", 1, 2, fe_label, fe_style}};
+        plots.emplace_back("contact_pressure", pressure);
+
+        Common::IO::PlotDescription traction;
+        traction.title   = "Tangential traction on the block, mu = " + mu_text;
+        traction.x_label = x_label;
+        traction.y_label = "tangential traction [MPa]";
+        traction.x_range = x_range;
+        traction.series  = {{"reference_profile.csv",
+                             1,
+                             3,
+                            friction ? "Spence (increasing load)" : "zero",
+                             "lines lw 2"},
+                            {"contact_profile.csv", 1, 3, fe_label, fe_style}};
+        if (friction)
+          traction.series.push_back(
+            {"reference_profile.csv", 1, 6, "mu p (Hertz)", "lines dt 2"});
+        plots.emplace_back("tangential_traction", traction);
+
+        Common::IO::PlotDescription slip;
+        slip.title   = "Slip accumulated in contact, mu = " + mu_text;
+        slip.x_label = x_label;
+        slip.y_label = "slip, block relative to cylinder [mm]";
+        slip.x_range = x_range;
+        slip.series  = {{"contact_profile.csv", 1, 4, fe_label, fe_style}};
+        if (mu == 0.)
+          slip.series.insert(
+            slip.series.begin(),
+            {"reference_profile.csv", 1, 4, "closed form S_0", "lines lw 2"});
+        if (has_slip_table)
+          slip.series.insert(slip.series.begin(),
+                             {"reference_slip_table.csv",
+                              1,
+                              2,
+                              "Spence (tabulated, +-5 %)",
+                              "points pt 6 ps 1.5"});
+        plots.emplace_back("slip", slip);
+
+        for (const auto &[name, plot] : plots)
+          if (!Common::IO::write_plot(out.directory, name, plot))
+            {
+              console.stream() << "  Note: gnuplot not available; plot "
+                                  "scripts written without PNG."
+                               << std::endl;
+              break;
+            }
       }
 
     // summary.json: the headline numbers with their references and the
@@ -383,7 +540,8 @@ namespace CgsRoller
                Common::Contact::Enforcement::penalty ?
              "penalty" :
              "lagrange multiplier")
-      .set("friction_coefficient", 0.)
+      .set("friction_law", friction ? "coulomb" : "frictionless")
+      .set("friction_coefficient", mu)
       .set("n_load_steps", parameters.load_stepping.n_steps)
       .set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(mpi_communicator));
     if (parameters.contact.enforcement == Common::Contact::Enforcement::penalty)
@@ -401,11 +559,15 @@ namespace CgsRoller
            Common::Geometry::smallest_cell_near<dim>(triangulation,
                                                      contact_distance));
 
-    unsigned int total_iterations = 0;
+    unsigned int total_iterations = 0, max_iterations = 0;
     for (const auto n : stepping.newton_iterations)
-      total_iterations += n;
+      {
+        total_iterations += n;
+        max_iterations = std::max(max_iterations, n);
+      }
     JsonObject newton;
     newton.set("total_iterations", total_iterations)
+      .set("max_iterations_per_step", max_iterations)
       .set("iterations_per_step", stepping.newton_iterations)
       .set("n_cutbacks", stepping.n_cutbacks);
 
@@ -416,16 +578,45 @@ namespace CgsRoller
       .set("applied_force_half_model_N_per_mm", applied)
       .set("force_balance_relative_error", std::abs(force - applied) / applied)
       .set("pressure_l2_relative_error", l2_error / reference_norm)
-      .set("n_active_nodes", enforcement.n_active());
+      .set("n_active_nodes", enforcement.n_active())
+      .set("peak_tangential_traction_MPa", r.peak_tangential_traction)
+      .set("slip_at_half_width_mm", r.slip_at_half_contact);
+    if (friction)
+      results.set("stick_half_width_mm", r.stick_half_width)
+        .set("stick_ratio_c_over_a",
+             half_width > 0. ? r.stick_half_width / half_width : 0.);
 
     JsonObject reference;
     reference.set("source", "Hertz line contact, plane strain")
       .set("peak_pressure_MPa", hertz.peak_pressure())
-      .set("contact_half_width_mm", hertz.half_width());
+      .set("contact_half_width_mm", hertz.half_width())
+      .set("dundurs_beta", std::abs(hertz.dundurs_beta()));
+    if (std::isfinite(slip_reference))
+      reference.set("slip_at_half_width_mm", slip_reference)
+        .set("slip_source",
+             mu == 0. ? "closed form S0, REFERENCES.md sec. 1.3" :
+                        "Spence, tabulated in REFERENCES.md sec. 1.3");
+    if (friction)
+      reference
+        .set("friction_source",
+             "Spence partial slip under increasing load (Goodman "
+             "approximation)")
+        .set("stick_ratio_c_over_a", spence.stick_ratio())
+        .set("stick_half_width_mm", spence.stick_half_width())
+        .set("peak_tangential_traction_MPa", spence.peak_tangential_traction());
 
     JsonObject ratios;
     ratios.set("peak_pressure", peak / hertz.peak_pressure())
       .set("contact_half_width", half_width / hertz.half_width());
+    if (std::isfinite(slip_reference))
+      ratios.set("slip_at_half_width", r.slip_at_half_contact / slip_reference);
+    if (friction)
+      ratios
+        .set("peak_tangential_traction",
+             r.peak_tangential_traction / spence.peak_tangential_traction())
+        .set("stick_ratio_difference",
+             (half_width > 0. ? r.stick_half_width / half_width : 0.) -
+               spence.stick_ratio());
 
     JsonObject summary;
     summary.set("benchmark", "cgs_roller")
@@ -477,8 +668,13 @@ namespace CgsRoller
     out.prepare_directory({"summary.json",
                            "contact_profile.csv",
                            "reference_profile.csv",
+                           "reference_slip_table.csv",
                            "contact_pressure.png",
                            "contact_pressure.gp",
+                           "tangential_traction.png",
+                           "tangential_traction.gp",
+                           "slip.png",
+                           "slip.gp",
                            "solution.pvd",
                            "used_parameters.prm"},
                           mpi_communicator);
@@ -508,15 +704,15 @@ namespace CgsRoller
       postprocess_step(step, load, stats);
       if (out.write_graphical_output)
         {
-          Common::IO::NodalScalarField pressure{"contact_pressure", {}};
-          for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-            pressure.values[coupling.secondary_surface().node(j).dofs[0]] =
-              enforcement.pressure(j);
+          std::vector<Common::IO::NodalScalarField> contact_fields;
+          for (auto &[name, values] :
+               Common::Contact::contact_nodal_fields(coupling, enforcement))
+            contact_fields.push_back({name, std::move(values)});
           solution_output.write(dof_handler,
                                 mapping,
                                 contact_problem->displacement(),
                                 {&stress},
-                                {pressure},
+                                contact_fields,
                                 load,
                                 step);
         }

@@ -7,6 +7,7 @@
 #define cgs_roller_roller_problem_h
 
 #include <common/analytic/hertz.h>
+#include <common/analytic/spence.h>
 #include <common/contact/contact_postprocessor.h>
 #include <common/io/console.h>
 #include <common/io/json_writer.h>
@@ -68,15 +69,21 @@ namespace CgsRoller
     setup_system();
     Common::Problems::ExternalLoad
     external_load() const;
+    /** Spence's partial-slip solution at full load (mu = 0 allowed). */
+    Common::Analytic::SpencePartialSlip
+    spence_reference() const;
     /** Contact results at a load factor, with the Hertz reference. */
     struct Results
     {
       Common::Analytic::HertzLineContact                    hertz;
       std::vector<Common::Contact::ContactPointResult<dim>> profile;
-      double peak_pressure; // MPa
-      double half_width;    // mm
-      double contact_force; // N/mm, half model, compressive positive
-      double applied_force; // N/mm, half model
+      double peak_pressure;            // MPa
+      double half_width;               // mm
+      double contact_force;            // N/mm, half model, compressive positive
+      double applied_force;            // N/mm, half model
+      double stick_half_width;         // mm
+      double peak_tangential_traction; // MPa, largest |t|
+      double slip_at_half_contact;     // mm, accumulated slip at x = a/2
     };
     Results
     evaluate_results(const double load_factor) const;

@@ -549,5 +549,31 @@ namespace Common
         -2. * mu / PI * (std::acos(r) - r * std::log((1. + s) / r));
       return slip_value + singular_part + xi * regular_stick_integral(xi);
     }
+
+
+    std::vector<std::pair<double, double>>
+    spence_slip_table_mu01(const double a, const double radius)
+    {
+      // REFERENCES.md 1.3: S [mm] at x/a = 0, 0.1, ..., 1 for a = 6.21463 mm
+      // and R = 50 mm.
+      const double tabulated[] = {0.,
+                                  0.00024,
+                                  0.00097,
+                                  0.0022,
+                                  0.0039,
+                                  0.0058,
+                                  0.0075,
+                                  0.0081,
+                                  0.0076,
+                                  0.0049,
+                                  0.};
+      const double a_table = 6.21463, radius_table = 50.;
+      const double scale =
+        (a * a / radius) / (a_table * a_table / radius_table);
+      std::vector<std::pair<double, double>> table;
+      for (unsigned int i = 0; i < 11; ++i)
+        table.emplace_back(0.1 * i * a, scale * tabulated[i]);
+      return table;
+    }
   } // namespace Analytic
 } // namespace Common

@@ -1,4 +1,5 @@
 #include <common/contact/contact_enforcement.h>
+#include <common/contact/coulomb_law.h>
 #include <common/contact/normal_contact_law.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -17,13 +18,15 @@ namespace Common
     {
       /**
        * DoFs of secondary node j followed by the DoFs of its primary nodes,
-       * and the gradient B of the weighted gap with respect to them:
-       * -D_j n on the secondary node, M_jk n on primary node k.
+       * and the gradient B of \f$d\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$
+       * with respect to them: -D_j d on the secondary node, M_jk d on
+       * primary node k. With d = n_j this is the weighted gap.
        */
       template <int dim>
       void
       gap_gradient(const MortarCoupling<dim>            &coupling,
                    const unsigned int                    j,
+                   const Tensor<1, dim>                 &direction,
                    std::vector<types::global_dof_index> &dofs,
                    Vector<double>                       &B)
       {
@@ -34,19 +37,45 @@ namespace Common
         for (unsigned int c = 0; c < dim; ++c)
           {
             dofs.push_back(secondary_node.dofs[c]);
-            values.push_back(-row.weight * row.normal[c]);
+            values.push_back(-row.weight * direction[c]);
           }
         for (const auto &[k, M] : row.primary_weights)
           for (unsigned int c = 0; c < dim; ++c)
             {
               dofs.push_back(coupling.primary_surface().node(k).dofs[c]);
-              values.push_back(M * row.normal[c]);
+              values.push_back(M * direction[c]);
             }
         B.reinit(values.size());
         for (unsigned int i = 0; i < values.size(); ++i)
           B(i) = values[i];
       }
+
+
+
+      /** Tangential part \f$(I - n n^T)x\f$. */
+      template <int dim>
+      Tensor<1, dim>
+      tangential_part(const Tensor<1, dim> &x, const Tensor<1, dim> &n)
+      {
+        return x - (x * n) * n;
+      }
     } // namespace
+
+
+
+    std::string
+    to_string(const PointStatus status)
+    {
+      switch (status)
+        {
+          case PointStatus::open:
+            return "open";
+          case PointStatus::stick:
+            return "stick";
+          default:
+            return "slip";
+        }
+    }
 
 
 
@@ -58,12 +87,48 @@ namespace Common
       : parameters(parameters)
       , coupling(coupling)
       , reference_modulus(reference_modulus)
-      , active(coupling.n_rows(), false)
-      , pressures(coupling.n_rows(), 0.)
+      , slip_accumulated(coupling.n_rows())
       , cycling(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
-    {}
+    {
+      const unsigned int n = coupling.n_rows();
+      state.status.assign(n, PointStatus::open);
+      state.slip_direction.assign(n, Tensor<1, dim>());
+      state.pressures.assign(n, 0.);
+      state.tangential_tractions.assign(n, Tensor<1, dim>());
+      accepted_state = state;
+      accepted_relative_displacement.assign(n, Tensor<1, dim>());
+      tangentially_free.assign(n, true);
+      normally_free.assign(n, true);
+    }
+
+
+
+    template <int dim>
+    void
+    ContactEnforcement<dim>::mark_constrained_nodes(
+      const AffineConstraints<double> &constraints)
+    {
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          unsigned int n_fixed = 0;
+          for (const auto dof : coupling.secondary_surface().node(j).dofs)
+            n_fixed += constraints.is_constrained(dof);
+          tangentially_free[j] = (n_fixed == 0);
+          normally_free[j]     = (n_fixed < dim);
+        }
+    }
+
+
+
+    template <int dim>
+    bool
+    ContactEnforcement<dim>::has_friction() const
+    {
+      return parameters.friction_law == FrictionLaw::coulomb &&
+             parameters.friction_coefficient > 0.;
+    }
 
 
 
@@ -86,20 +151,78 @@ namespace Common
           const MortarRow<dim> &row = coupling.row(j);
           // The weighted gap averages over the node's support and is not
           // zero at a touching node; the pointwise gap is, up to round-off.
-          active[j] = row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
+          const bool touching =
+            row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
+          // A touching node has no slip history: it starts in stick.
+          state.status[j] = (!touching      ? PointStatus::open :
+                             has_friction() ? PointStatus::stick :
+                                              PointStatus::slip);
         }
-      std::fill(pressures.begin(), pressures.end(), 0.);
-      commit();
+      std::fill(state.pressures.begin(), state.pressures.end(), 0.);
+      std::fill(state.tangential_tractions.begin(),
+                state.tangential_tractions.end(),
+                Tensor<1, dim>());
+      accepted_state = state;
+      std::fill(accepted_relative_displacement.begin(),
+                accepted_relative_displacement.end(),
+                Tensor<1, dim>());
+      std::fill(slip_accumulated.begin(),
+                slip_accumulated.end(),
+                Tensor<1, dim>());
     }
 
 
 
     template <int dim>
     void
-    ContactEnforcement<dim>::commit()
+    ContactEnforcement<dim>::commit(const VectorType &u)
     {
-      accepted_active    = active;
-      accepted_pressures = pressures;
+      const auto        &surface = coupling.secondary_surface();
+      const unsigned int n       = coupling.n_rows();
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const Tensor<1, dim> relative = coupling.relative_displacement(j, u);
+          if (state.status[j] != PointStatus::open)
+            {
+              const Tensor<1, dim> increment =
+                tangential_part(relative - accepted_relative_displacement[j],
+                                coupling.row(j).normal);
+              double fraction = 1.;
+              if (accepted_state.status[j] == PointStatus::open)
+                {
+                  // Closed during the step: credit the part of the step
+                  // after the contact edge passed the node, with the edge
+                  // midway between the last closed and first open nodes at
+                  // the start (old) and end (new) of the step.
+                  const Point<dim> &x     = surface.node(j).position;
+                  double            d_old = std::numeric_limits<double>::max();
+                  double            d_new = d_old, spacing = d_old;
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      if (i == j || !coupling.row(i).has_partner)
+                        continue;
+                      const double d = x.distance(surface.node(i).position);
+                      spacing        = std::min(spacing, d);
+                      if (accepted_state.status[i] != PointStatus::open)
+                        d_old = std::min(d_old, d);
+                      if (state.status[i] == PointStatus::open)
+                        d_new = std::min(d_new, d);
+                    }
+                  if (d_old < std::numeric_limits<double>::max() &&
+                      d_new < std::numeric_limits<double>::max() &&
+                      d_old + d_new > spacing)
+                    fraction = std::clamp((d_new - 0.5 * spacing) /
+                                            (d_old + d_new - spacing),
+                                          0.,
+                                          1.);
+                  else
+                    fraction = 0.5;
+                }
+              slip_accumulated[j] += fraction * increment;
+            }
+          accepted_relative_displacement[j] = relative;
+        }
+      accepted_state = state;
     }
 
 
@@ -108,8 +231,7 @@ namespace Common
     void
     ContactEnforcement<dim>::restore()
     {
-      active    = accepted_active;
-      pressures = accepted_pressures;
+      state = accepted_state;
     }
 
 
@@ -119,7 +241,7 @@ namespace Common
     ContactEnforcement<dim>::begin_step()
     {
       history.clear();
-      history.push_back(active);
+      history.push_back(codes(state));
       cycling                  = false;
       last_update_extrapolated = false;
       extrapolation_enabled    = parameters.accelerate_release;
@@ -202,13 +324,43 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
-          if (!active[j])
+          if (state.status[j] == PointStatus::open)
             continue;
           const MortarRow<dim> &row  = coupling.row(j);
           const auto           &node = coupling.secondary_surface().node(j);
 
-          // Solve the linearised condition for the free component with the
-          // largest normal share.
+          bool all_free = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            all_free = all_free && !constraints.is_constrained(node.dofs[d]);
+
+          if (state.status[j] == PointStatus::stick && all_free)
+            {
+              // D du_j = sum_k M_jk du_k + g~ n + D P(w(u) - w_old): after
+              // the increment the weighted gap vanishes and the relative
+              // tangential displacement is that of the last accepted step.
+              const Tensor<1, dim> target_defect =
+                coupling.weighted_gap(j, u) / row.weight * row.normal +
+                slip_increment(j, u);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  std::vector<std::pair<types::global_dof_index, double>>
+                    entries;
+                  for (const auto &[k, M] : row.primary_weights)
+                    if (std::abs(M) > 1e-14 * row.weight)
+                      entries.emplace_back(
+                        coupling.primary_surface().node(k).dofs[d],
+                        M / row.weight);
+                  constraints.add_line(node.dofs[d]);
+                  constraints.add_entries(node.dofs[d], entries);
+                  constraints.set_inhomogeneity(node.dofs[d], target_defect[d]);
+                }
+              continue;
+            }
+
+          // Normal condition only (slip, or a stick node with a component
+          // fixed otherwise, e.g. on a symmetry plane): solve the
+          // linearised condition for the free component with the largest
+          // normal share.
           int c = -1;
           for (unsigned int d = 0; d < dim; ++d)
             if (!constraints.is_constrained(node.dofs[d]) &&
@@ -241,6 +393,74 @@ namespace Common
 
     template <int dim>
     void
+    ContactEnforcement<dim>::assemble_friction(
+      const AffineConstraints<double> &constraints,
+      const MatrixType                &bulk_matrix,
+      const VectorType                &bulk_residual,
+      const IndexSet                  &locally_owned,
+      MatrixType                      &matrix,
+      VectorType                      &residual) const
+    {
+      if (!has_friction())
+        return;
+      const double                         mu = parameters.friction_coefficient;
+      std::vector<types::global_dof_index> B_dofs;
+      Vector<double>                       B;
+      std::map<types::global_dof_index, double> stiffness_row;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          const auto &node = coupling.secondary_surface().node(j);
+          if (state.status[j] != PointStatus::slip || !tangentially_free[j] ||
+              !locally_owned.is_element(node.dofs[0]))
+            continue;
+          const MortarRow<dim> &row = coupling.row(j);
+
+          // lambda_j(u) = n.r_j(u)/D_j and its gradient -n^T K_j / D_j.
+          double rn = 0.;
+          stiffness_row.clear();
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              Assert(locally_owned.is_element(node.dofs[c]),
+                     ExcInternalError());
+              rn += bulk_residual(node.dofs[c]) * row.normal[c];
+              if (row.normal[c] == 0.)
+                continue;
+              for (auto entry = bulk_matrix.begin(node.dofs[c]);
+                   entry != bulk_matrix.end(node.dofs[c]);
+                   ++entry)
+                stiffness_row[entry->column()] +=
+                  row.normal[c] * entry->value();
+            }
+          const double pressure = rn / row.weight;
+
+          // Force -mu lambda B_e: D mu lambda e on the secondary node, its
+          // reaction on the primary nodes. Tangent -(mu/D) B_e (n^T K_j).
+          gap_gradient(coupling, j, state.slip_direction[j], B_dofs, B);
+          std::vector<types::global_dof_index> dofs = B_dofs;
+          for (const auto &entry : stiffness_row)
+            if (std::find(B_dofs.begin(), B_dofs.end(), entry.first) ==
+                B_dofs.end())
+              dofs.push_back(entry.first);
+          FullMatrix<double> K(dofs.size(), dofs.size());
+          Vector<double>     r(dofs.size());
+          for (unsigned int a = 0; a < B_dofs.size(); ++a)
+            {
+              r(a) = -mu * pressure * B(a);
+              for (unsigned int b = 0; b < dofs.size(); ++b)
+                {
+                  const auto it = stiffness_row.find(dofs[b]);
+                  if (it != stiffness_row.end())
+                    K(a, b) = -mu / row.weight * B(a) * it->second;
+                }
+            }
+          constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
+        }
+    }
+
+
+
+    template <int dim>
+    void
     ContactEnforcement<dim>::assemble_penalty(
       const AffineConstraints<double> &constraints,
       const VectorType                &u,
@@ -255,8 +475,9 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          if (!active[j] || !locally_owned.is_element(
-                              coupling.secondary_surface().node(j).dofs[0]))
+          if (state.status[j] == PointStatus::open ||
+              !locally_owned.is_element(
+                coupling.secondary_surface().node(j).dofs[0]))
             continue;
           const double gap = coupling.weighted_gap(j, u) / row.weight;
           const double p =
@@ -266,7 +487,7 @@ namespace Common
             NormalContactLaw::penalty_derivative(gap,
                                                  parameters.penalty_stiffness);
 
-          gap_gradient(coupling, j, dofs, B);
+          gap_gradient(coupling, j, row.normal, dofs, B);
           K.reinit(dofs.size(), dofs.size());
           r.reinit(dofs.size());
           // Residual f_ext - f_int + p B; tangent -(dp/dg~) B B^T.
@@ -289,24 +510,29 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (!active[j])
+          const MortarRow<dim> &row     = coupling.row(j);
+          state.tangential_tractions[j] = Tensor<1, dim>();
+          if (state.status[j] == PointStatus::open)
             {
-              pressures[j] = 0.;
+              state.pressures[j] = 0.;
               continue;
             }
           if (parameters.enforcement == Enforcement::penalty)
-            pressures[j] =
+            state.pressures[j] =
               NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
                                                    row.weight,
                                                  parameters.penalty_stiffness);
           else
             {
-              const auto &node = coupling.secondary_surface().node(j);
-              double      rn   = 0.;
+              // Equilibrium of node j: r_j + D_j(-lambda n + t) = 0.
+              const auto    &node = coupling.secondary_surface().node(j);
+              Tensor<1, dim> r;
               for (unsigned int c = 0; c < dim; ++c)
-                rn += bulk_residual(node.dofs[c]) * row.normal[c];
-              pressures[j] = rn / row.weight;
+                r[c] = bulk_residual(node.dofs[c]);
+              state.pressures[j] = (r * row.normal) / row.weight;
+              if (has_friction())
+                state.tangential_tractions[j] =
+                  -tangential_part(r, row.normal) / row.weight;
             }
         }
     }
@@ -321,14 +547,90 @@ namespace Common
       std::vector<types::global_dof_index> dofs;
       Vector<double>                       B;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        if (pressures[j] != 0. &&
-            locally_owned.is_element(
-              coupling.secondary_surface().node(j).dofs[0]))
-          {
-            gap_gradient(coupling, j, dofs, B);
-            B *= pressures[j];
-            residual.add(dofs, B);
-          }
+        {
+          const MortarRow<dim> &row = coupling.row(j);
+          const Tensor<1, dim>  traction =
+            -state.pressures[j] * row.normal + state.tangential_tractions[j];
+          if (traction.norm() == 0. ||
+              !locally_owned.is_element(
+                coupling.secondary_surface().node(j).dofs[0]))
+            continue;
+          // B of d = -traction: D t on the secondary node, -M t on primary.
+          gap_gradient(coupling, j, -traction, dofs, B);
+          residual.add(dofs, B);
+        }
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    ContactEnforcement<dim>::slip_increment(const unsigned int j,
+                                            const VectorType  &u) const
+    {
+      return tangential_part(coupling.relative_displacement(j, u) -
+                               accepted_relative_displacement[j],
+                             coupling.row(j).normal);
+    }
+
+
+
+    template <int dim>
+    std::pair<double, Tensor<1, dim>>
+    ContactEnforcement<dim>::complementarity(const unsigned int j,
+                                             const VectorType  &u) const
+    {
+      const MortarRow<dim> &row = coupling.row(j);
+      const double          gap = coupling.weighted_gap(j, u) / row.weight;
+      const double          c   = ncp_constant(j);
+      const double          C_n =
+        normally_free[j] ?
+                   NormalContactLaw::complementarity(state.pressures[j], gap, c) :
+                   0.;
+      Tensor<1, dim> C_t;
+      if (has_friction() && tangentially_free[j])
+        C_t =
+          CoulombLaw::complementarity(state.tangential_tractions[j],
+                                      slip_increment(j, u),
+                                      parameters.friction_coefficient *
+                                        std::max(0.,
+                                                 state.pressures[j] - c * gap),
+                                      c);
+      return {C_n, C_t};
+    }
+
+
+
+    template <int dim>
+    double
+    ContactEnforcement<dim>::violation(const unsigned int j,
+                                       const VectorType  &u) const
+    {
+      const auto [C_n, C_t] = complementarity(j, u);
+      return (std::abs(C_n) + C_t.norm()) * coupling.row(j).weight;
+    }
+
+
+
+    template <int dim>
+    std::vector<int>
+    ContactEnforcement<dim>::codes(const State &s) const
+    {
+      std::vector<int> result(s.status.size());
+      for (unsigned int j = 0; j < s.status.size(); ++j)
+        {
+          result[j] = static_cast<int>(s.status[j]);
+          // In 2D the slip direction is one of two senses of the tangent.
+          if (dim == 2 && s.status[j] == PointStatus::slip &&
+              s.slip_direction[j].norm() > 0.)
+            {
+              const Tensor<1, dim> &n = coupling.row(j).normal;
+              const double          sense =
+                s.slip_direction[j][0] * n[1] - s.slip_direction[j][1] * n[0];
+              result[j] += (sense < 0. ? 10 : 0);
+            }
+        }
+      return result;
     }
 
 
@@ -338,22 +640,24 @@ namespace Common
     ContactEnforcement<dim>::update_active_set(const VectorType &u)
     {
       const unsigned int n = coupling.n_rows();
-      std::vector<bool>  next(n, false);
+      std::vector<bool>  closed(n, false), next(n, false);
       unsigned int       n_closed = 0, n_opened = 0;
       for (unsigned int j = 0; j < n; ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
+          closed[j]                 = (state.status[j] != PointStatus::open);
           if (!row.has_partner)
             continue;
           const double gap = coupling.weighted_gap(j, u) / row.weight;
-          next[j] =
-            (parameters.enforcement == Enforcement::penalty ?
-               NormalContactLaw::penalty_derivative(
-                 gap,
-                 parameters.penalty_stiffness) != 0. :
-               NormalContactLaw::is_active(pressures[j], gap, ncp_constant(j)));
-          n_closed += (next[j] && !active[j]);
-          n_opened += (!next[j] && active[j]);
+          next[j]          = (parameters.enforcement == Enforcement::penalty ?
+                                NormalContactLaw::penalty_derivative(
+                         gap,
+                         parameters.penalty_stiffness) != 0. :
+                                NormalContactLaw::is_active(state.pressures[j],
+                                                   gap,
+                                                   ncp_constant(j)));
+          n_closed += (next[j] && !closed[j]);
+          n_opened += (!next[j] && closed[j]);
         }
 
       if (n_closed > 0 && last_update_extrapolated)
@@ -365,7 +669,7 @@ namespace Common
           const auto               &surface = coupling.secondary_surface();
           std::vector<unsigned int> opened, kept;
           for (unsigned int j = 0; j < n; ++j)
-            if (active[j] && !next[j])
+            if (closed[j] && !next[j])
               opened.push_back(j);
             else if (next[j])
               kept.push_back(j);
@@ -396,40 +700,79 @@ namespace Common
             }
         }
 
+      // Stick or slip for the closed nodes.
+      State proposed = state;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          proposed.slip_direction[j] = Tensor<1, dim>();
+          if (!next[j])
+            {
+              proposed.status[j] = PointStatus::open;
+              continue;
+            }
+          if (!has_friction())
+            {
+              proposed.status[j] = PointStatus::slip;
+              continue;
+            }
+          if (!tangentially_free[j])
+            {
+              proposed.status[j] = PointStatus::stick;
+              continue;
+            }
+          const MortarRow<dim> &row = coupling.row(j);
+          const double          c   = ncp_constant(j);
+          const double          bound =
+            parameters.friction_coefficient *
+            std::max(0.,
+                     state.pressures[j] -
+                       c * coupling.weighted_gap(j, u) / row.weight);
+          const Tensor<1, dim> v = slip_increment(j, u);
+          if (CoulombLaw::is_sticking(state.tangential_tractions[j],
+                                      v,
+                                      bound,
+                                      c))
+            proposed.status[j] = PointStatus::stick;
+          else
+            {
+              proposed.status[j] = PointStatus::slip;
+              proposed.slip_direction[j] =
+                CoulombLaw::slip_direction(state.tangential_tractions[j], v, c);
+            }
+        }
+
       // A set seen before in this step means ping-pong (typically a corner
       // and a mid-side node of a Q2 face trading places at the contact
-      // edge). Then change only the point with the largest complementarity
-      // violation whose change leads to a set not seen yet.
-      const auto seen = [this](const std::vector<bool> &set) {
+      // edge, or a node at the stick-slip boundary). Then change only the
+      // point with the largest complementarity violation whose change
+      // leads to a set not seen yet.
+      const std::vector<int> current_codes = codes(state);
+      std::vector<int>       next_codes    = codes(proposed);
+      const auto             seen = [this](const std::vector<int> &set) {
         return std::find(history.begin(), history.end(), set) != history.end();
       };
       cycling = false;
-      if (next != active && seen(next))
+      if (next_codes != current_codes && seen(next_codes))
         {
           extrapolation_enabled = false;
           std::vector<std::pair<double, unsigned int>> violations;
           for (unsigned int j = 0; j < n; ++j)
-            if (next[j] != active[j])
-              {
-                const MortarRow<dim> &row = coupling.row(j);
-                violations.emplace_back(
-                  std::abs(NormalContactLaw::complementarity(
-                    pressures[j],
-                    coupling.weighted_gap(j, u) / row.weight,
-                    ncp_constant(j))) *
-                    row.weight,
-                  j);
-              }
+            if (next_codes[j] != current_codes[j])
+              violations.emplace_back(violation(j, u), j);
           std::sort(violations.rbegin(), violations.rend());
           cycling = true;
-          for (const auto &[violation, j] : violations)
+          for (const auto &[size, j] : violations)
             {
-              std::vector<bool> single = active;
-              single[j]                = !single[j];
+              std::vector<int> single = current_codes;
+              single[j]               = next_codes[j];
               if (!seen(single))
                 {
-                  next    = single;
-                  cycling = false;
+                  State one             = state;
+                  one.status[j]         = proposed.status[j];
+                  one.slip_direction[j] = proposed.slip_direction[j];
+                  proposed              = one;
+                  next_codes            = single;
+                  cycling               = false;
                   break;
                 }
             }
@@ -437,9 +780,11 @@ namespace Common
 
       unsigned int n_changed = 0;
       for (unsigned int j = 0; j < n; ++j)
-        n_changed += (next[j] != active[j]);
-      active = next;
-      history.push_back(active);
+        n_changed += (next_codes[j] != current_codes[j]);
+      // In 3D a slip direction may turn without changing the code.
+      state.status         = proposed.status;
+      state.slip_direction = proposed.slip_direction;
+      history.push_back(next_codes);
       return n_changed;
     }
 
@@ -466,12 +811,8 @@ namespace Common
           const MortarRow<dim> &row = coupling.row(j);
           if (!row.has_partner)
             continue;
-          const double C =
-            NormalContactLaw::complementarity(pressures[j],
-                                              coupling.weighted_gap(j, u) /
-                                                row.weight,
-                                              ncp_constant(j));
-          sum += std::pow(C * row.weight, 2);
+          const auto [C_n, C_t] = complementarity(j, u);
+          sum += (C_n * C_n + C_t.norm_square()) * row.weight * row.weight;
         }
       return std::sqrt(sum);
     }
@@ -482,7 +823,7 @@ namespace Common
     double
     ContactEnforcement<dim>::pressure(const unsigned int j) const
     {
-      return pressures[j];
+      return state.pressures[j];
     }
 
 
@@ -491,7 +832,34 @@ namespace Common
     bool
     ContactEnforcement<dim>::is_active(const unsigned int j) const
     {
-      return active[j];
+      return state.status[j] != PointStatus::open;
+    }
+
+
+
+    template <int dim>
+    PointStatus
+    ContactEnforcement<dim>::status(const unsigned int j) const
+    {
+      return state.status[j];
+    }
+
+
+
+    template <int dim>
+    const Tensor<1, dim> &
+    ContactEnforcement<dim>::tangential_traction(const unsigned int j) const
+    {
+      return state.tangential_tractions[j];
+    }
+
+
+
+    template <int dim>
+    const Tensor<1, dim> &
+    ContactEnforcement<dim>::accumulated_slip(const unsigned int j) const
+    {
+      return slip_accumulated[j];
     }
 
 
@@ -500,7 +868,11 @@ namespace Common
     unsigned int
     ContactEnforcement<dim>::n_active() const
     {
-      return std::count(active.begin(), active.end(), true);
+      return std::count_if(state.status.begin(),
+                           state.status.end(),
+                           [](const PointStatus s) {
+                             return s != PointStatus::open;
+                           });
     }
 
 
@@ -515,7 +887,7 @@ namespace Common
           bool any_active = false, any_unpaired = false;
           for (const unsigned int j : surface.face(f).nodes)
             {
-              any_active   = any_active || active[j];
+              any_active   = any_active || state.status[j] != PointStatus::open;
               any_unpaired = any_unpaired || !coupling.row(j).has_partner;
             }
           if (any_active && any_unpaired)

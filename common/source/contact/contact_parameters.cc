@@ -32,8 +32,16 @@ namespace Common
                           "stiffness').");
         prm.declare_entry("Friction law",
                           "frictionless",
-                          Patterns::Selection("frictionless"),
-                          "Tangential contact law.");
+                          Patterns::Selection("frictionless|coulomb"),
+                          "Tangential contact law: 'frictionless' or "
+                          "'coulomb' (exact Coulomb friction with stick and "
+                          "slip, no regularisation; Lagrange multipliers "
+                          "only).");
+        prm.declare_entry("Friction coefficient",
+                          "0.0",
+                          Patterns::Double(0.),
+                          "Coulomb friction coefficient mu, used by "
+                          "'coulomb' only. Dimensionless, >= 0.");
         prm.declare_entry("Penalty stiffness",
                           "1e6",
                           Patterns::Double(0.),
@@ -86,10 +94,15 @@ namespace Common
         enforcement           = (prm.get("Enforcement") == "penalty" ?
                                    Enforcement::penalty :
                                    Enforcement::lagrange_multiplier);
-        friction_law          = FrictionLaw::frictionless;
-        penalty_stiffness     = prm.get_double("Penalty stiffness");
-        ncp_factor            = prm.get_double("NCP constant factor");
-        search_distance       = prm.get_double("Search distance");
+        friction_law =
+          (prm.get("Friction law") == "coulomb" ? FrictionLaw::coulomb :
+                                                  FrictionLaw::frictionless);
+        friction_coefficient = (friction_law == FrictionLaw::coulomb ?
+                                  prm.get_double("Friction coefficient") :
+                                  0.);
+        penalty_stiffness    = prm.get_double("Penalty stiffness");
+        ncp_factor           = prm.get_double("NCP constant factor");
+        search_distance      = prm.get_double("Search distance");
         max_active_set_iterations =
           prm.get_integer("Maximum active set iterations");
         accelerate_release = prm.get_bool("Accelerate active set release");
@@ -104,6 +117,10 @@ namespace Common
       AssertThrow(ncp_factor > 0.,
                   ExcMessage("Contact: 'NCP constant factor' must be "
                              "positive."));
+      AssertThrow(friction_law == FrictionLaw::frictionless ||
+                    enforcement == Enforcement::lagrange_multiplier,
+                  ExcMessage("Contact: 'coulomb' friction needs 'Enforcement "
+                             "= lagrange multiplier'."));
       AssertThrow(search_distance > 0.,
                   ExcMessage("Contact: 'Search distance' must be positive."));
     }

@@ -12,30 +12,26 @@ namespace Common
   {
     using namespace dealii;
 
-    namespace
+    template <int dim>
+    Tensor<1, dim>
+    tangent_of(const Tensor<1, dim> &n)
     {
-      template <int dim>
-      Tensor<1, dim>
-      tangent_of(const Tensor<1, dim> &n)
-      {
-        Tensor<1, dim> t;
-        if constexpr (dim == 2)
-          {
-            t[0] = n[1];
-            t[1] = -n[0];
-          }
-        else
-          {
-            // Any unit vector orthogonal to n; 3D profiles refine this.
-            const Tensor<1, dim> e =
-              (std::abs(n[0]) < 0.9 ? Tensor<1, dim>({1., 0., 0.}) :
-                                      Tensor<1, dim>({0., 1., 0.}));
-            t = e - (e * n) * n;
-            t /= t.norm();
-          }
-        return t;
-      }
-    } // namespace
+      Tensor<1, dim> t;
+      if constexpr (dim == 2)
+        {
+          t[0] = n[1];
+          t[1] = -n[0];
+        }
+      else
+        {
+          const Tensor<1, dim> e =
+            (std::abs(n[0]) < 0.9 ? Tensor<1, dim>({1., 0., 0.}) :
+                                    Tensor<1, dim>({0., 1., 0.}));
+          t = e - (e * n) * n;
+          t /= t.norm();
+        }
+      return t;
+    }
 
 
 
@@ -68,9 +64,11 @@ namespace Common
           // unit area is the traction on the secondary surface.
           result.tangential_traction =
             enforcement.is_active(j) ? -(r * t) / row.weight : 0.;
-          result.slip   = coupling.relative_displacement(j, u) * t;
+          result.slip = enforcement.accumulated_slip(j) * t;
+          result.relative_displacement =
+            coupling.relative_displacement(j, u) * t;
           result.gap    = coupling.weighted_gap(j, u) / row.weight;
-          result.status = enforcement.is_active(j) ? "slip" : "open";
+          result.status = to_string(enforcement.status(j));
           profile.push_back(result);
         }
       std::sort(profile.begin(),
@@ -127,6 +125,57 @@ namespace Common
 
 
     template <int dim>
+    std::vector<
+      std::pair<std::string, std::map<types::global_dof_index, double>>>
+    contact_nodal_fields(const MortarCoupling<dim>     &coupling,
+                         const ContactEnforcement<dim> &enforcement)
+    {
+      std::vector<
+        std::pair<std::string, std::map<types::global_dof_index, double>>>
+        fields{{"contact_pressure", {}},
+               {"contact_status", {}},
+               {"tangential_traction", {}},
+               {"contact_slip", {}}};
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          const types::global_dof_index dof =
+            coupling.secondary_surface().node(j).dofs[0];
+          const Tensor<1, dim> t     = tangent_of(coupling.row(j).normal);
+          const auto           along = [&t](const Tensor<1, dim> &x) {
+            return dim == 2 ? x * t : x.norm();
+          };
+          fields[0].second[dof] = enforcement.pressure(j);
+          fields[1].second[dof] = static_cast<double>(enforcement.status(j));
+          fields[2].second[dof] = along(enforcement.tangential_traction(j));
+          fields[3].second[dof] = along(enforcement.accumulated_slip(j));
+        }
+      return fields;
+    }
+
+
+
+    template <int dim>
+    double
+    stick_extent(const std::vector<ContactPointResult<dim>> &profile,
+                 const unsigned int                          axis)
+    {
+      unsigned int i = 0;
+      while (i < profile.size() && profile[i].status == "open")
+        ++i;
+      if (i == profile.size() || profile[i].status != "stick")
+        return 0.;
+      while (i + 1 < profile.size() && profile[i + 1].status == "stick")
+        ++i;
+      const double x0 = profile[0].position[axis];
+      if (i + 1 == profile.size())
+        return profile[i].position[axis] - x0;
+      return 0.5 * (profile[i].position[axis] + profile[i + 1].position[axis]) -
+             x0;
+    }
+
+
+
+    template <int dim>
     double
     pressure_l2_error(
       const MortarCoupling<dim>                       &coupling,
@@ -172,21 +221,32 @@ namespace Common
     {
       std::ofstream out(filename);
       AssertThrow(out, ExcMessage("Cannot write " + filename));
-      out << "x,pressure,tangential_traction,slip,gap,status\n";
+      out << "x,pressure,tangential_traction,slip,relative_displacement,gap,"
+             "status\n";
       out << std::setprecision(8);
       for (const auto &p : profile)
         {
           AssertThrow(std::isfinite(p.pressure) &&
                         std::isfinite(p.tangential_traction) &&
-                        std::isfinite(p.slip) && std::isfinite(p.gap),
+                        std::isfinite(p.slip) &&
+                        std::isfinite(p.relative_displacement) &&
+                        std::isfinite(p.gap),
                       ExcMessage("Contact profile holds a non-finite value."));
           out << p.position[axis] << ',' << p.pressure << ','
-              << p.tangential_traction << ',' << p.slip << ',' << p.gap << ','
-              << p.status << '\n';
+              << p.tangential_traction << ',' << p.slip << ','
+              << p.relative_displacement << ',' << p.gap << ',' << p.status
+              << '\n';
         }
     }
 
 #define INSTANTIATE(dim)                                                       \
+  template Tensor<1, dim> tangent_of(const Tensor<1, dim> &);                  \
+  template std::vector<                                                        \
+    std::pair<std::string, std::map<types::global_dof_index, double>>>         \
+                  contact_nodal_fields(const MortarCoupling<dim> &,            \
+                                       const ContactEnforcement<dim> &);       \
+  template double stick_extent(const std::vector<ContactPointResult<dim>> &,   \
+                               const unsigned int);                            \
   template std::vector<ContactPointResult<dim>> contact_profile(               \
     const MortarCoupling<dim> &,                                               \
     const ContactEnforcement<dim> &,                                           \

@@ -193,6 +193,14 @@ namespace Common
           if (rows[j].has_partner)
             rows[j].primary_weights.assign(weights[j].begin(),
                                            weights[j].end());
+          // The gap of the reference geometry once: later gaps add only
+          // displacements, so their round-off scales with the displacement
+          // and not with the coordinates.
+          Tensor<1, dim> d;
+          for (const auto &[k, M] : rows[j].primary_weights)
+            d += M * primary->node(k).reference_position;
+          d -= rows[j].weight * secondary->node(j).reference_position;
+          rows[j].reference_weighted_gap = rows[j].normal * d;
         }
     }
 
@@ -253,14 +261,11 @@ namespace Common
       const SurfaceNode<dim> &node = secondary->node(j);
       Tensor<1, dim>          d;
       for (const auto &[k, M] : r.primary_weights)
-        {
-          const SurfaceNode<dim> &pk = primary->node(k);
-          for (unsigned int c = 0; c < dim; ++c)
-            d[c] += M * (pk.reference_position[c] + u(pk.dofs[c]));
-        }
+        for (unsigned int c = 0; c < dim; ++c)
+          d[c] += M * u(primary->node(k).dofs[c]);
       for (unsigned int c = 0; c < dim; ++c)
-        d[c] -= r.weight * (node.reference_position[c] + u(node.dofs[c]));
-      return r.normal * d;
+        d[c] -= r.weight * u(node.dofs[c]);
+      return r.reference_weighted_gap + r.normal * d;
     }
 
 

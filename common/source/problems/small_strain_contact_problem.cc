@@ -80,6 +80,8 @@ namespace Common
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            mortar,
                                                            reference_modulus);
+      contact_enforcement->mark_constrained_nodes(
+        constraints_dirichlet_and_hanging_nodes);
       contact_enforcement->initialize_active_set();
       solve_times.contact_setup = IO::seconds_since(start);
 
@@ -103,23 +105,50 @@ namespace Common
                            dsp,
                            mpi_communicator);
       linear_solver.reset();
+
+      if (contact_enforcement->has_friction())
+        {
+          bulk_matrix.reinit(system_matrix);
+          TrilinosWrappers::MPI::Vector unused(locally_owned_dofs,
+                                               mpi_communicator);
+          physics.assemble_system(dof_handler,
+                                  constraints_dirichlet_and_hanging_nodes,
+                                  solution,
+                                  bulk_matrix,
+                                  unused);
+          bulk_matrix.compress(VectorOperation::add);
+        }
     }
 
 
 
     // One semismooth Newton iteration: Dirichlet and hanging-node
     // constraints and, for Lagrange multipliers, one condensed constraint
-    // per closed node; bulk tangent and residual; external load; penalty
-    // terms if selected.
+    // per closed node (two for a sticking one); bulk tangent and residual;
+    // external load; friction or penalty terms if selected.
     template <int dim>
     void
     SmallStrainContactProblem<dim>::assemble_and_solve(const double load_factor,
                                                        const ExternalLoad &load)
     {
       const auto start = std::chrono::steady_clock::now();
+      if (contact_enforcement->has_friction())
+        compute_bulk_residual(load_factor, load);
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
       constraints.merge(constraints_dirichlet_and_hanging_nodes);
+      if (load.prescribed_displacements)
+        {
+          std::map<types::global_dof_index, double> values;
+          load.prescribed_displacements(load_factor, values);
+          for (const auto &[dof, value] : values)
+            {
+              AssertThrow(constraints.is_constrained(dof),
+                          ExcMessage("A prescribed displacement acts on a "
+                                     "DoF without a Dirichlet constraint."));
+              constraints.set_inhomogeneity(dof, value - solution(dof));
+            }
+        }
       if (contact_parameters.enforcement ==
           Contact::Enforcement::lagrange_multiplier)
         contact_enforcement->add_constraints(constraints, solution);
@@ -139,6 +168,12 @@ namespace Common
                                               locally_owned_dofs,
                                               system_matrix,
                                               system_rhs);
+      contact_enforcement->assemble_friction(constraints,
+                                             bulk_matrix,
+                                             residual_vector,
+                                             locally_owned_dofs,
+                                             system_matrix,
+                                             system_rhs);
       system_matrix.compress(VectorOperation::add);
       system_rhs.compress(VectorOperation::add);
       solve_times.assembly += IO::seconds_since(start);
@@ -154,16 +189,12 @@ namespace Common
 
 
 
-    // Residuals of the updated state, relative to the load: equilibrium
-    // including the contact forces of the recovered pressures, and the
-    // complementarity function.
     template <int dim>
-    Solvers::NewtonResidual
-    SmallStrainContactProblem<dim>::evaluate_residual(const double load_factor,
-                                                      const ExternalLoad &load)
+    TrilinosWrappers::MPI::Vector
+    SmallStrainContactProblem<dim>::compute_bulk_residual(
+      const double        load_factor,
+      const ExternalLoad &load)
     {
-      const auto start = std::chrono::steady_clock::now();
-
       // f_ext - f_int condensed as the linear system is: hanging-node
       // forces on their parents (a secondary node may be one), Dirichlet
       // rows zero (support reactions are no contact tractions).
@@ -177,6 +208,25 @@ namespace Common
       load.add(load_factor, constraints_dirichlet_and_hanging_nodes, r);
       r.compress(VectorOperation::add);
       residual_vector = r;
+      return r;
+    }
+
+
+
+    // Residuals of the updated state, relative to the load: equilibrium
+    // including the contact forces of the recovered tractions, and the
+    // normal and tangential complementarity functions.
+    template <int dim>
+    Solvers::NewtonResidual
+    SmallStrainContactProblem<dim>::evaluate_residual(const double load_factor,
+                                                      const ExternalLoad &load)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      // A compressed vector: contact forces are added on the ranks that own
+      // contact nodes only, and the final compress() is the one collective
+      // step.
+      TrilinosWrappers::MPI::Vector r =
+        compute_bulk_residual(load_factor, load);
 
       contact_enforcement->update_pressures(solution, residual_vector);
       contact_enforcement->add_contact_forces(locally_owned_dofs, r);
@@ -236,7 +286,7 @@ namespace Common
     SmallStrainContactProblem<dim>::commit()
     {
       accepted_solution = solution_owned;
-      contact_enforcement->commit();
+      contact_enforcement->commit(solution);
     }
 
 

@@ -14,6 +14,7 @@
 #ifndef common_analytic_spence_h
 #define common_analytic_spence_h
 
+#include <utility>
 #include <vector>
 
 namespace Common
@@ -56,6 +57,19 @@ namespace Common
      */
     double
     spence_stick_ratio(const double beta, const double mu);
+
+    /**
+     * @brief Slip accumulated in contact under increasing load for
+     * \f$|\beta| = 1/7\f$ and \f$\mu = 0.1\f$, tabulated in REFERENCES.md
+     * 1.3 from a quadrature of Spence's solution (+-5 %) for a = 6.21463 mm,
+     * R = 50 mm, and scaled to other loads and radii by
+     * \f$S \propto a^2/R\f$ (the solution is self-similar).
+     * @param[in] a Contact half-width (mm).
+     * @param[in] radius Cylinder radius R (mm).
+     * @return Pairs (x, S) for x/a = 0, 0.1, ..., 1 (mm, mm).
+     */
+    std::vector<std::pair<double, double>>
+    spence_slip_table_mu01(const double a, const double radius);
 
     /**
      * @brief Partial slip of a Hertz line contact between dissimilar

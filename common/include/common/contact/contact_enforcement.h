@@ -3,7 +3,8 @@
  * Enforcement of the normal contact condition on the mortar rows of a
  * contact pair: the active set of the semismooth Newton method, its
  * condensation into affine constraints (dual Lagrange multipliers), the
- * penalty alternative, and the recovery of the nodal pressures.
+ * penalty alternative, Coulomb friction, and the recovery of the nodal
+ * tractions.
  *
  * With dual multipliers D is diagonal, so an active node's constraint
  * \f$\tilde g_j(u) = 0\f$ can be solved for one displacement component of
@@ -12,8 +13,25 @@
  * multiplier follows afterwards from the residual of that node,
  * \f$\lambda_j = r_j\cdot n_j / D_j\f$.
  *
+ * Coulomb friction (exact, primal-dual active set = semismooth Newton on
+ * CoulombLaw::complementarity()): a closed node either sticks or slips.
+ * A sticking node's relative tangential displacement is held at its value
+ * of the last accepted load step; together with the normal condition that
+ * fixes the whole node to the mean motion of its primary partners,
+ * \f$D_j u_j = \sum_k M_{jk} u_k - w_j\f$, again a condensed
+ * constraint. A slipping node carries the tangential traction
+ * \f$\mu\lambda_j e_j\f$ along the slip direction e_j of the active set,
+ * where \f$\lambda_j = n_j\cdot r_j(u)/D_j\f$ is linear in u through the
+ * bulk stiffness rows of the node; this term makes the system
+ * non-symmetric. In 2D the tangent plane is a line, e_j is constant within
+ * an iteration, and the iteration is the exact semismooth Newton method;
+ * in 3D the direction is updated by the active-set loop (fixed point).
+ * The tangential traction follows from the residual like the pressure,
+ * \f$t_j = -(I - n_j n_j^T) r_j / D_j\f$.
+ *
  * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
- * A. Popp et al., IJNME 83 (2010) 1428-1465.
+ * A. Popp et al., IJNME 83 (2010) 1428-1465; S. Hueeber, G. Stadler,
+ * B. Wohlmuth, SIAM J. Sci. Comput. 30 (2008) 572-596.
  */
 #ifndef common_contact_contact_enforcement_h
 #define common_contact_contact_enforcement_h
@@ -28,14 +46,33 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace Common
 {
   namespace Contact
   {
+    /** State of a secondary node in the active set; the values are
+     * those of the "contact_status" output field. */
+    enum class PointStatus
+    {
+      /** Not in contact. */
+      open = 0,
+      /** In contact, no relative tangential motion in the step. */
+      stick = 1,
+      /** In contact and sliding (every closed node without friction). */
+      slip = 2
+    };
+
+    /** @brief "open", "stick" or "slip". */
+    std::string
+    to_string(const PointStatus status);
+
     /**
-     * @brief Normal contact enforcement on the rows of a MortarCoupling.
+     * @brief Normal and frictional contact enforcement on the rows of a
+     * MortarCoupling.
      */
     template <int dim>
     class ContactEnforcement
@@ -63,10 +100,32 @@ namespace Common
       void
       initialize_active_set();
 
-      /** @brief Keep the current active set and pressures as the state of
-       * the last accepted load step. */
+      /**
+       * @brief Mark the secondary nodes with a DoF fixed by @p constraints
+       * (Dirichlet conditions, e.g. a symmetry plane, or hanging nodes):
+       * their tangential motion is prescribed, so friction does not act
+       * there and a closed one counts as sticking; a node with every DoF
+       * fixed cannot take the normal condition either. Call once, after
+       * the constructor.
+       */
       void
-      commit();
+      mark_constrained_nodes(
+        const dealii::AffineConstraints<double> &constraints);
+
+      /**
+       * @brief Keep the current active set and tractions as the state of
+       * the last accepted load step, and with it the friction history: the
+       * relative displacement of every node at @p u, from which the next
+       * step's slip increments are measured, and the slip accumulated while
+       * in contact. A node that closed during the step is credited with the
+       * fraction of its increment after the contact edge passed it; the
+       * edge is taken midway between the last closed and the first open
+       * node at the start and at the end of the step, and assumed to move
+       * uniformly within the step.
+       * @param[in] u Converged displacement of the step (ghosted).
+       */
+      void
+      commit(const VectorType &u);
 
       /** @brief Return to the state of the last accepted load step (after a
        * failed step, before a cutback). */
@@ -102,6 +161,30 @@ namespace Common
                       const VectorType                  &u) const;
 
       /**
+       * @brief Coulomb friction: add the tangential traction
+       * \f$\mu\lambda_j(u)e_j\f$ of every slipping node whose first DoF is
+       * in @p locally_owned, and its linearisation, which couples the
+       * node's bulk stiffness row into its primary partners' rows. Matrix and
+       * vector are not compressed here.
+       * @param[in] bulk_matrix Tangent of the bulk residual, condensed with
+       * the Dirichlet and hanging-node constraints only; supplies the rows
+       * of the slipping nodes (which must be locally owned).
+       * @param[in] bulk_residual f_ext - f_int at the current u (N,
+       * ghosted), condensed like @p bulk_matrix.
+       */
+      void
+      assemble_friction(const dealii::AffineConstraints<double> &constraints,
+                        const MatrixType                        &bulk_matrix,
+                        const VectorType                        &bulk_residual,
+                        const dealii::IndexSet                  &locally_owned,
+                        MatrixType                              &matrix,
+                        VectorType &residual) const;
+
+      /** @brief True if Coulomb friction with mu > 0 is enforced. */
+      bool
+      has_friction() const;
+
+      /**
        * @brief Penalty: add tangent and residual of the penalty terms for
        * the nodes whose first DoF is in @p locally_owned. Matrix and vector
        * are not compressed here.
@@ -114,24 +197,29 @@ namespace Common
                        VectorType                              &residual) const;
 
       /**
-       * @brief Update the nodal pressures: from the residual force
-       * @p bulk_residual = f_ext - f_int (N, ghosted) for Lagrange
-       * multipliers, from the penalty law otherwise.
+       * @brief Update the nodal pressures and tangential tractions: from
+       * the residual force @p bulk_residual = f_ext - f_int (N, ghosted)
+       * for Lagrange multipliers, pressures from the penalty law otherwise.
        */
       void
       update_pressures(const VectorType &u, const VectorType &bulk_residual);
 
       /**
-       * @brief Add the contact forces \f$\sum_j\lambda_j\,\partial\tilde
-       * g_j/\partial u\f$ to @p residual (N) for the nodes whose first DoF
-       * is in @p locally_owned. Not compressed here.
+       * @brief Add the contact forces of the nodal tractions
+       * \f$-\lambda_j n_j + t_j\f$ (pressure and tangential traction) to
+       * @p residual (N): \f$D_j\f$ times the traction on secondary node j,
+       * \f$-M_{jk}\f$ times it on primary node k, for the nodes whose
+       * first DoF is in @p locally_owned. Not compressed here.
        */
       void
       add_contact_forces(const dealii::IndexSet &locally_owned,
                          VectorType             &residual) const;
 
       /**
-       * @brief Apply the active-set rule to every paired node.
+       * @brief Apply the active-set rule to every paired node: the normal
+       * rule, then for closed nodes with friction the stick/slip rule
+       * CoulombLaw::is_sticking() with the bound
+       * \f$\mu\max(0, \lambda - c\,g)\f$ and the slip direction.
        *
        * If the rule only opens points, the opened band is extrapolated
        * (unless switched off): a closed node j is opened too if an opened
@@ -143,10 +231,11 @@ namespace Common
        * stays off for the rest of the step.
        *
        * If the rule returns to an active set seen earlier in the step
-       * (ping-pong), only the point with the largest complementarity
-       * violation is changed, choosing one that leads to an unseen set;
-       * is_cycling() reports the case where none exists.
-       * @return Number of nodes whose status changed.
+       * (ping-pong between open and closed, or stick and slip), only the
+       * point with the largest complementarity violation is changed,
+       * choosing one that leads to an unseen set; is_cycling() reports the
+       * case where none exists.
+       * @return Number of nodes whose status (or slip direction) changed.
        */
       unsigned int
       update_active_set(const VectorType &u);
@@ -156,9 +245,29 @@ namespace Common
       bool
       is_cycling() const;
 
-      /** @brief Norm of the complementarity function weighted by D_j (N). */
+      /** @brief Norm of the normal and tangential complementarity
+       * functions weighted by D_j (N). */
       double
       complementarity_norm(const VectorType &u) const;
+
+      /** @brief Status of secondary node j. */
+      PointStatus
+      status(const unsigned int j) const;
+
+      /** @brief Tangential traction on the secondary surface at node j
+       * (MPa), a vector of the tangent plane. */
+      const dealii::Tensor<1, dim> &
+      tangential_traction(const unsigned int j) const;
+
+      /** @brief Increment, since the last accepted step, of the relative
+       * tangential displacement at node j (primary minus secondary, mm). */
+      dealii::Tensor<1, dim>
+      slip_increment(const unsigned int j, const VectorType &u) const;
+
+      /** @brief Relative tangential displacement accumulated at node j
+       * while in contact, over the accepted steps (mm). */
+      const dealii::Tensor<1, dim> &
+      accumulated_slip(const unsigned int j) const;
 
       /** @brief Pressure lambda_j of secondary node j (MPa). */
       double
@@ -182,17 +291,44 @@ namespace Common
       ncp_constant(const unsigned int j) const;
 
     private:
-      const ContactParameters        parameters;
-      const MortarCoupling<dim>     &coupling;
-      const double                   reference_modulus;
-      std::vector<bool>              active;
-      std::vector<double>            pressures;
-      std::vector<bool>              accepted_active;
-      std::vector<double>            accepted_pressures;
-      std::vector<std::vector<bool>> history;
-      bool                           cycling;
-      bool                           last_update_extrapolated;
-      bool                           extrapolation_enabled;
+      /** State of all nodes that an accepted step must keep. */
+      struct State
+      {
+        std::vector<PointStatus>            status;
+        std::vector<dealii::Tensor<1, dim>> slip_direction;
+        std::vector<double>                 pressures;
+        std::vector<dealii::Tensor<1, dim>> tangential_tractions;
+      };
+
+      /** Active-set code of every node: status and, in 2D, the sense of
+       * the slip direction. Used to detect cycling. */
+      std::vector<int>
+      codes(const State &state) const;
+
+      /** Normal (MPa) and tangential (MPa) complementarity functions of
+       * node j, in the current state. */
+      std::pair<double, dealii::Tensor<1, dim>>
+      complementarity(const unsigned int j, const VectorType &u) const;
+
+      /** Weighted violation of node j (N), to rank nodes when cycling. */
+      double
+      violation(const unsigned int j, const VectorType &u) const;
+
+      const ContactParameters             parameters;
+      const MortarCoupling<dim>          &coupling;
+      const double                        reference_modulus;
+      State                               state;
+      State                               accepted_state;
+      std::vector<dealii::Tensor<1, dim>> accepted_relative_displacement;
+      std::vector<dealii::Tensor<1, dim>> slip_accumulated;
+      std::vector<std::vector<int>>       history;
+      /** Nodes whose tangential motion is free (no DoF fixed). */
+      std::vector<bool> tangentially_free;
+      /** Nodes with at least one free DoF. */
+      std::vector<bool> normally_free;
+      bool              cycling;
+      bool              last_update_extrapolated;
+      bool              extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common

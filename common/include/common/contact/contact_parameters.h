@@ -26,7 +26,11 @@ namespace Common
     /** Values of the parameter "Friction law" in subsection "Contact". */
     enum class FrictionLaw
     {
-      frictionless
+      /** No tangential traction. */
+      frictionless,
+      /** Exact Coulomb friction: stick while |t| < mu p, slip against the
+       * relative motion with |t| = mu p otherwise. */
+      coulomb
     };
 
     /**
@@ -47,6 +51,9 @@ namespace Common
       dealii::types::boundary_id secondary_boundary_id;
       Enforcement                enforcement;
       FrictionLaw                friction_law;
+      /** Coulomb friction coefficient mu (dimensionless); 0 if
+       * frictionless. */
+      double friction_coefficient;
       /** Penalty stiffness (MPa/mm): pressure per unit penetration. */
       double penalty_stiffness;
       /** Factor c_N of the complementarity constant c = c_N E / h

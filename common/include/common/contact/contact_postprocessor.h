@@ -12,7 +12,9 @@
 #include <common/contact/contact_enforcement.h>
 
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace Common
@@ -34,9 +36,13 @@ namespace Common
       /** Tangential traction on the secondary surface along the tangent
        * t = (n_y, -n_x) in 2D (MPa). */
       double tangential_traction;
-      /** Relative tangential displacement, primary minus secondary, along
-       * t (mm). */
+      /** Slip accumulated while in contact over the accepted load steps:
+       * relative tangential displacement, primary minus secondary, along t
+       * (mm). */
       double slip;
+      /** Total relative tangential displacement since the undeformed
+       * state, primary minus secondary, along t (mm). */
+      double relative_displacement;
       /** Mean normal gap g~_j / D_j (mm), negative when penetrating. */
       double gap;
       /** "open", "stick" or "slip" (a closed frictionless point slips). */
@@ -44,10 +50,19 @@ namespace Common
     };
 
     /**
+     * @brief Tangent of a 2D curve with normal n, t = (n_y, -n_x); in 3D
+     * some unit vector orthogonal to n.
+     */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    tangent_of(const dealii::Tensor<1, dim> &n);
+
+    /**
      * @brief Results at every paired secondary node, sorted by the
      * coordinate @p axis of the reference position.
      * @param[in] bulk_residual f_ext - f_int (N, ghosted): gives the
-     * tangential traction.
+     * tangential traction without friction (the traction that would be
+     * needed to hold the node; zero at convergence).
      */
     template <int dim>
     std::vector<ContactPointResult<dim>>
@@ -56,6 +71,32 @@ namespace Common
                     const dealii::TrilinosWrappers::MPI::Vector &u,
                     const dealii::TrilinosWrappers::MPI::Vector &bulk_residual,
                     const unsigned int                           axis);
+
+    /**
+     * @brief Nodal fields of the contact state for graphical output, each
+     * a name and a value per secondary node, keyed by the global DoF of the
+     * node's first displacement component: "contact_pressure" (MPa),
+     * "contact_status" (0 open, 1 stick, 2 slip), "tangential_traction"
+     * (MPa, along tangent_of() the normal; in 3D its magnitude) and
+     * "contact_slip" (slip accumulated in contact, mm, same convention).
+     */
+    template <int dim>
+    std::vector<
+      std::pair<std::string, std::map<dealii::types::global_dof_index, double>>>
+    contact_nodal_fields(const MortarCoupling<dim>     &coupling,
+                         const ContactEnforcement<dim> &enforcement);
+
+    /**
+     * @brief Extent of the stick zone along a sorted profile: distance
+     * from the first profile point to the midpoint between the last
+     * sticking node of the run of stick nodes that starts at the first
+     * closed node and the next node (mm); zero if that node does not
+     * stick.
+     */
+    template <int dim>
+    double
+    stick_extent(const std::vector<ContactPointResult<dim>> &profile,
+                 const unsigned int                          axis);
 
     /**
      * @brief Total contact force on the secondary surface,
@@ -99,8 +140,8 @@ namespace Common
 
     /**
      * @brief Write the profile as CSV with the header
-     * `x,pressure,tangential_traction,slip,gap,status`, where x is the
-     * coordinate @p axis (mm; MPa; MPa; mm; mm).
+     * `x,pressure,tangential_traction,slip,relative_displacement,gap,status`,
+     * where x is the coordinate @p axis (mm; MPa; MPa; mm; mm; mm).
      */
     template <int dim>
     void

@@ -51,6 +51,9 @@ namespace Common
        * were integrated (mm); +infinity if the normal misses the primary
        * surface. Decides which nodes touch at the start. */
       double nodal_gap = std::numeric_limits<double>::infinity();
+      /** Weighted gap of the reference geometry,
+       * \f$n_j\cdot(\sum_k M_{jk}X_k - D_j X_j)\f$ (mm^dim). */
+      double reference_weighted_gap = 0.;
     };
 
     /**

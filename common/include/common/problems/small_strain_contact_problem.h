@@ -28,6 +28,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 
 namespace Common
@@ -48,6 +49,14 @@ namespace Common
       /** Size of the load at @p load_factor, the scale of the relative
        * residuals (N). */
       std::function<double(const double load_factor)> magnitude;
+      /** Optional: prescribed displacements at @p load_factor (mm), for
+       * DoFs that carry a (homogeneous) Dirichlet constraint in the
+       * constraints given to setup(); the first Newton iteration of a
+       * load step moves them there. */
+      std::function<
+        void(const double                                       load_factor,
+             std::map<dealii::types::global_dof_index, double> &values)>
+        prescribed_displacements;
     };
 
     /**
@@ -158,6 +167,12 @@ namespace Common
       Solvers::NewtonResidual
       evaluate_residual(const double load_factor, const ExternalLoad &load);
 
+      /** f_ext - f_int at the current state, condensed with the Dirichlet
+       * and hanging-node constraints (N): stored, ghosted, in
+       * residual_vector and returned as a compressed owned vector. */
+      dealii::TrilinosWrappers::MPI::Vector
+      compute_bulk_residual(const double load_factor, const ExternalLoad &load);
+
       const dealii::DoFHandler<dim>           &dof_handler;
       const dealii::Mapping<dim>              &mapping;
       Physics::SmallStrainElasticity<dim>     &physics;
@@ -178,6 +193,10 @@ namespace Common
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
       dealii::AffineConstraints<double> constraints;
       dealii::TrilinosWrappers::SparseMatrix system_matrix;
+      /** Bulk tangent condensed with the Dirichlet and hanging-node
+       * constraints only (friction needs the stiffness rows of slipping
+       * nodes); constant in small-strain elasticity. */
+      dealii::TrilinosWrappers::SparseMatrix bulk_matrix;
       dealii::TrilinosWrappers::MPI::Vector  solution;
       dealii::TrilinosWrappers::MPI::Vector  solution_owned;
       dealii::TrilinosWrappers::MPI::Vector  accepted_solution;
