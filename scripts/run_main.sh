@@ -53,6 +53,16 @@ python3 scripts/accuracy_time_study.py "${study_flags[@]}" \
   --build "$root/build-release" --out "$results/studies/cgs_roller_accuracy_time"
 echo "== study wall time: $((SECONDS - study_start)) s"
 
+study_start=$SECONDS
+echo "== friction sweep (benchmark 1, Coulomb, c/a against Spence)"
+if $quick; then sweep_flags=(--quick); else sweep_flags=(); fi
+# The sweep reports runs outside the Spence band; that is a result, not an
+# error of the main job.
+python3 scripts/friction_sweep.py "${sweep_flags[@]}" \
+  --build "$root/build-release" --out "$results/studies/cgs_roller_friction_sweep" ||
+  echo "== friction sweep: some runs outside the band (see the table)"
+echo "== sweep wall time: $((SECONDS - study_start)) s"
+
 python3 scripts/make_report.py --results "$results"
 echo "== main job wall time: $((SECONDS - start)) s (plus $((start - setup_start)) s setup and build)"
 echo "== open $results/report.html"
