@@ -502,7 +502,7 @@ namespace CgsRoller
         Common::IO::PlotDescription slip;
         slip.title   = "Slip accumulated in contact, mu = " + mu_text;
         slip.x_label = x_label;
-        slip.y_label = "slip, block relative to cylinder [mm]";
+        slip.y_label = "slip, roller relative to block, along +x [mm]";
         slip.x_range = x_range;
         slip.series  = {{"contact_profile.csv", 1, 4, fe_label, fe_style}};
         if (mu == 0.)
