@@ -14,8 +14,8 @@ Two loads are swept:
          half-space limit of the same model, where the comparison with
          Spence isolates the discretisation and the exact normal-tangential
          coupling (which Spence's Goodman approximation neglects).
-A run fails the sweep if it does not complete, needs a load-step cutback,
-or has |c/a - Spence| > tolerance (default 0.05). The script exits
+A run fails the sweep if it does not complete or has |c/a - Spence| >
+tolerance (default 0.05); load-step cutbacks are reported in the table. The script exits
 non-zero if any run fails.
 
 Writes friction_sweep.csv and stick_ratio_vs_mu.png (c/a against mu with
@@ -171,7 +171,7 @@ def main():
             print(f"{r['load']:6s} {r['mu']:<6g} run failed: {r['error']}")
             continue
         diff = r["c_over_a"] - r["c_over_a_spence"]
-        ok = abs(diff) <= args.tolerance and r["n_cutbacks"] == 0
+        ok = abs(diff) <= args.tolerance
         r["difference"] = diff
         r["verdict"] = "pass" if ok else "FAIL"
         n_failed += not ok

@@ -91,6 +91,25 @@ def case_section(app, name, case, results):
     return out, passed, failed
 
 
+def generic_table(rows, columns):
+    """The study's table with the columns [key, label] its report.json names;
+    numbers with a fraction are shown to 4 decimals."""
+    out = ["<table><tr>" + "".join(f"<th>{html.escape(label)}</th>" for _, label in columns) + "</tr>"]
+    for r in rows:
+        cells = []
+        for key, _ in columns:
+            v = r.get(key, "")
+            try:
+                if "." in v or "e" in v:
+                    v = f"{float(v):.4f}"
+            except ValueError:
+                pass
+            cells.append(f"<td>{html.escape(str(v))}</td>")
+        out.append("<tr>" + "".join(cells) + "</tr>")
+    out.append("</table>")
+    return out
+
+
 def study_section(study, results):
     directory = os.path.join(results, study["directory"])
     out = [f"<h3>{html.escape(study['title'])}</h3>", f"<p>{html.escape(study['text'])}</p>"]
@@ -101,6 +120,8 @@ def study_section(study, results):
         out.append(image(os.path.join(directory, file), caption))
     with open(table) as f:
         rows = list(csv.DictReader(f))
+    if "columns" in study:
+        return out + generic_table(rows, study["columns"])
     # Time to reach 1 % error in p0, per element degree and enforcement.
     series = {}
     for r in rows:
