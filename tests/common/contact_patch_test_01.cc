@@ -20,91 +20,23 @@
  * one to 1e-8 relative.
  */
 
-#include <common/contact/contact_parameters.h>
 #include <common/contact/contact_postprocessor.h>
-#include <common/geometry/two_body_meshes.h>
-#include <common/materials/linear_elastic.h>
-#include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
-#include <common/solvers/newton_solver.h>
+
+#include "two_block_patch.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
-#include <deal.II/base/index_set.h>
-#include <deal.II/base/logstream.h>
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/shared_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
-#include <map>
-#include <memory>
-#include <sstream>
-#include <string>
-#include <vector>
 
 using namespace dealii;
+using namespace TwoBlockPatch;
 
 namespace
 {
-  namespace BoundaryIds
-  {
-    constexpr types::boundary_id lower_bottom   = 1;
-    constexpr types::boundary_id lower_top      = 2; // secondary
-    constexpr types::boundary_id lower_symmetry = 3;
-    constexpr types::boundary_id lower_side     = 4;
-    constexpr types::boundary_id upper_bottom   = 5; // primary
-    constexpr types::boundary_id upper_top      = 6; // loaded
-    constexpr types::boundary_id upper_symmetry = 7;
-    constexpr types::boundary_id upper_side     = 8;
-  } // namespace BoundaryIds
-
-  namespace MaterialIds
-  {
-    constexpr types::material_id lower = 1;
-    constexpr types::material_id upper = 2;
-  } // namespace MaterialIds
-
-  constexpr double pressure_load    = 100.; // MPa
-  constexpr double interface_length = 1.;   // mm
-  constexpr double E_lower          = 70000.;
-  constexpr double E_upper          = 210000.;
-  constexpr double poisson_ratio    = 0.3;
-
-  std::string
-  yes_no(const bool b)
-  {
-    return b ? "yes" : "no";
-  }
-
-  std::string
-  pass_fail(const bool b)
-  {
-    return b ? "PASS" : "FAIL";
-  }
-
-  std::string
-  format(const double value, const unsigned int digits = 6)
-  {
-    std::ostringstream s;
-    s << std::showpoint << std::setprecision(digits) << value;
-    return s.str();
-  }
+  const Setting setting{70000., 210000., 0.3, 1., 100.};
 
 
 
@@ -112,215 +44,51 @@ namespace
   class PatchTest
   {
   public:
-    explicit PatchTest(const unsigned int degree);
+    explicit PatchTest(const unsigned int degree)
+      : patch(degree, setting, Common::Contact::FrictionLaw::frictionless, 0.)
+    {}
 
     void
     run();
 
   private:
     void
-    make_grid();
-    void
     setup_system();
-    void
-    assemble_load(const double                     load_factor,
-                  const AffineConstraints<double> &c,
-                  TrilinosWrappers::MPI::Vector   &rhs) const;
     void
     check_results(const Common::Solvers::NewtonStatistics &statistics);
 
-    const unsigned int degree;
-    MPI_Comm           mpi_communicator;
-
-    parallel::shared::Triangulation<dim>                         triangulation;
-    const FESystem<dim>                                          fe;
-    const MappingQ<dim>                                          mapping;
-    DoFHandler<dim>                                              dof_handler;
-    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
-
-    Common::Contact::ContactParameters         contact;
-    Common::Solvers::LinearSolverParameters    solver_parameters;
-    Common::Solvers::NonlinearSolverParameters newton_parameters;
-    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
-    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
-      contact_problem;
+    Patch<dim> patch;
   };
 
 
 
-  template <int dim>
-  PatchTest<dim>::PatchTest(const unsigned int degree)
-    : degree(degree)
-    , mpi_communicator(MPI_COMM_WORLD)
-    , triangulation(mpi_communicator)
-    , fe(FE_Q<dim>(degree), dim)
-    , mapping(degree)
-    , dof_handler(triangulation)
-  {
-    contact.primary_boundary_id   = BoundaryIds::upper_bottom;
-    contact.secondary_boundary_id = BoundaryIds::lower_top;
-    contact.enforcement  = Common::Contact::Enforcement::lagrange_multiplier;
-    contact.friction_law = Common::Contact::FrictionLaw::frictionless;
-    contact.penalty_stiffness         = 1e6;
-    contact.ncp_factor                = 1.;
-    contact.search_distance           = 0.5;
-    contact.max_active_set_iterations = 10;
-    contact.accelerate_release        = true;
-
-    solver_parameters.type           = Common::Solvers::LinearSolverType::mumps;
-    solver_parameters.tolerance      = 1e-12;
-    solver_parameters.max_iterations = 1000;
-    newton_parameters.max_iterations = contact.max_active_set_iterations;
-    newton_parameters.tolerance      = 1e-10;
-  }
-
-
-
-  // Lower block 4x4, upper block 3x3 coarse cells: the interface nodes do
-  // not match (also after one global refinement: 8 against 6 faces).
-  template <int dim>
-  void
-  PatchTest<dim>::make_grid()
-  {
-    Triangulation<dim> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower,
-                                              {4u, 4u},
-                                              Point<dim>(0., 0.),
-                                              Point<dim>(1., 1.));
-    GridGenerator::subdivided_hyper_rectangle(upper,
-                                              {3u, 3u},
-                                              Point<dim>(0., 1.),
-                                              Point<dim>(1., 2.));
-    for (const auto &cell : lower.active_cell_iterators())
-      cell->set_material_id(MaterialIds::lower);
-    for (const auto &cell : upper.active_cell_iterators())
-      cell->set_material_id(MaterialIds::upper);
-    Common::Geometry::join_bodies<dim>({&lower, &upper}, triangulation);
-
-    const double tolerance = 1e-10;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            const Point<dim> c = cell->face(f)->center();
-            if (cell->material_id() == MaterialIds::lower)
-              cell->face(f)->set_boundary_id(
-                std::abs(c[1]) < tolerance      ? BoundaryIds::lower_bottom :
-                std::abs(c[1] - 1.) < tolerance ? BoundaryIds::lower_top :
-                std::abs(c[0]) < tolerance      ? BoundaryIds::lower_symmetry :
-                                                  BoundaryIds::lower_side);
-            else
-              cell->face(f)->set_boundary_id(
-                std::abs(c[1] - 1.) < tolerance ? BoundaryIds::upper_bottom :
-                std::abs(c[1] - 2.) < tolerance ? BoundaryIds::upper_top :
-                std::abs(c[0]) < tolerance      ? BoundaryIds::upper_symmetry :
-                                                  BoundaryIds::upper_side);
-          }
-    triangulation.refine_global(1);
-  }
-
-
-
+  // The lower block rests on u_y = 0; both left sides are symmetry lines.
   template <int dim>
   void
   PatchTest<dim>::setup_system()
   {
-    dof_handler.distribute_dofs(fe);
-    constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(
-      complete_index_set(dof_handler.n_dofs()));
-    DoFTools::make_hanging_node_constraints(
-      dof_handler,
-      constraints_dirichlet_and_hanging_nodes);
+    AffineConstraints<double> constraints;
+    patch.make_grid_and_dofs(constraints);
     const FEValuesExtractors::Scalar x_displacement(0);
     const FEValuesExtractors::Scalar y_displacement(1);
-    VectorTools::interpolate_boundary_values(
-      mapping,
-      dof_handler,
-      BoundaryIds::lower_bottom,
-      Functions::ZeroFunction<dim>(dim),
-      constraints_dirichlet_and_hanging_nodes,
-      fe.component_mask(y_displacement));
+    VectorTools::interpolate_boundary_values(patch.mapping,
+                                             patch.dof_handler,
+                                             BoundaryIds::lower_bottom,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             constraints,
+                                             patch.fe.component_mask(
+                                               y_displacement));
     for (const auto id :
          {BoundaryIds::lower_symmetry, BoundaryIds::upper_symmetry})
       VectorTools::interpolate_boundary_values(
-        mapping,
-        dof_handler,
+        patch.mapping,
+        patch.dof_handler,
         id,
         Functions::ZeroFunction<dim>(dim),
-        constraints_dirichlet_and_hanging_nodes,
-        fe.component_mask(x_displacement));
-    constraints_dirichlet_and_hanging_nodes.close();
-
-    Common::Materials::LinearElasticParameters lower_parameters,
-      upper_parameters;
-    lower_parameters.youngs_modulus = E_lower;
-    lower_parameters.poisson_ratio  = poisson_ratio;
-    upper_parameters.youngs_modulus = E_upper;
-    upper_parameters.poisson_ratio  = poisson_ratio;
-    std::map<types::material_id, Common::Materials::LinearElastic<dim>>
-      materials;
-    materials.emplace(MaterialIds::lower,
-                      Common::Materials::LinearElastic<dim>(lower_parameters));
-    materials.emplace(MaterialIds::upper,
-                      Common::Materials::LinearElastic<dim>(upper_parameters));
-    physics =
-      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(mapping,
-                                                                    fe,
-                                                                    materials);
-
-    contact_problem =
-      std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
-        dof_handler,
-        mapping,
-        *physics,
-        contact,
-        solver_parameters,
-        newton_parameters,
-        E_lower,
-        mpi_communicator);
-    contact_problem->setup(constraints_dirichlet_and_hanging_nodes);
-  }
-
-
-
-  // Consistent nodal forces of the uniform pressure on the top of the upper
-  // block, traction t = (0, -p) times the load factor, distributed through
-  // @p c. Not compressed.
-  template <int dim>
-  void
-  PatchTest<dim>::assemble_load(const double                     load_factor,
-                                const AffineConstraints<double> &c,
-                                TrilinosWrappers::MPI::Vector   &rhs) const
-  {
-    const QGauss<dim - 1>                face_quadrature(degree + 1);
-    FEFaceValues<dim>                    fe_face_values(mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>                       cell_rhs(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    Tensor<1, dim>                       traction;
-    traction[1] = -load_factor * pressure_load;
-    const FEValuesExtractors::Vector displacement(0);
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::upper_top)
-            {
-              fe_face_values.reinit(cell, f);
-              cell_rhs = 0.;
-              for (const unsigned int q :
-                   fe_face_values.quadrature_point_indices())
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  cell_rhs(i) += fe_face_values[displacement].value(i, q) *
-                                 traction * fe_face_values.JxW(q);
-              cell->get_dof_indices(dof_indices);
-              c.distribute_local_to_global(cell_rhs, dof_indices, rhs);
-            }
+        constraints,
+        patch.fe.component_mask(x_displacement));
+    constraints.close();
+    patch.setup_problem(constraints);
   }
 
 
@@ -330,11 +98,11 @@ namespace
   PatchTest<dim>::check_results(
     const Common::Solvers::NewtonStatistics &statistics)
   {
-    const auto  &coupling      = contact_problem->coupling();
-    const auto  &enforcement   = contact_problem->enforcement();
-    const auto  &solution      = contact_problem->displacement();
-    const auto  &bulk_residual = contact_problem->bulk_residual();
-    const double p             = pressure_load;
+    const auto  &coupling      = patch.contact_problem->coupling();
+    const auto  &enforcement   = patch.contact_problem->enforcement();
+    const auto  &solution      = patch.contact_problem->displacement();
+    const auto  &bulk_residual = patch.contact_problem->bulk_residual();
+    const double p             = setting.pressure;
 
     // (a) Nodal pressures.
     unsigned int n_paired      = 0;
@@ -363,22 +131,22 @@ namespace
             << pass_fail(all_active && pressures_exact) << std::endl;
 
     // (b) Uniform stress at every quadrature point of both bodies.
-    const QGauss<dim>                    fe_quadrature(degree + 1);
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
+    const QGauss<dim>                    fe_quadrature(patch.degree + 1);
+    FEValues<dim>                        fe_values(patch.mapping,
+                            patch.fe,
                             fe_quadrature,
                             update_gradients | update_quadrature_points);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strains(fe_quadrature.size());
     double                               max_xx = 0., max_yy = 0., max_xy = 0.;
     unsigned int                         n_points = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : patch.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           fe_values[displacement].get_function_symmetric_gradients(solution,
                                                                    strains);
-          const auto &law = physics->material(cell->material_id());
+          const auto &law = patch.physics->material(cell->material_id());
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const SymmetricTensor<2, dim> sigma = law.stress(strains[q]);
@@ -422,8 +190,9 @@ namespace
     // relative tangential displacement (primary minus secondary) of the
     // exact solution, (eps_xx,upper - eps_xx,lower) x, with
     // eps_xx = nu (1 + nu) p / E in plane strain.
-    const double slip_rate =
-      poisson_ratio * (1. + poisson_ratio) * p * (1. / E_upper - 1. / E_lower);
+    const double slip_rate = setting.poisson_ratio *
+                             (1. + setting.poisson_ratio) * p *
+                             (1. / setting.E_upper - 1. / setting.E_lower);
     const auto profile      = Common::Contact::contact_profile(coupling,
                                                           enforcement,
                                                           solution,
@@ -459,29 +228,13 @@ namespace
   void
   PatchTest<dim>::run()
   {
-    make_grid();
     setup_system();
-    deallog << "Q" << degree << ": " << triangulation.n_active_cells()
-            << " cells, " << dof_handler.n_dofs() << " DoFs, "
-            << contact_problem->coupling().secondary_surface().n_faces()
-            << " secondary and "
-            << contact_problem->coupling().primary_surface().n_faces()
-            << " primary faces" << std::endl;
-
-    Common::Problems::ExternalLoad load;
-    load.add = [this](const double                     load_factor,
-                      const AffineConstraints<double> &c,
-                      TrilinosWrappers::MPI::Vector   &vector) {
-      assemble_load(load_factor, c, vector);
-    };
-    load.magnitude = [](const double load_factor) {
-      return load_factor * pressure_load * interface_length;
-    };
     ConditionalOStream quiet(std::cout, false);
-    const auto         statistics = contact_problem->solve(1., load, quiet);
+    const auto         statistics =
+      patch.contact_problem->solve(1., patch.external_load(), quiet);
     if (!statistics.converged)
       deallog << "Newton failure: " << statistics.failure << std::endl;
-    contact_problem->commit();
+    patch.contact_problem->commit();
     check_results(statistics);
   }
 } // namespace

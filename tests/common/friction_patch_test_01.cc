@@ -22,93 +22,27 @@
  * printed).
  */
 
-#include <common/contact/contact_parameters.h>
-#include <common/contact/contact_postprocessor.h>
-#include <common/geometry/two_body_meshes.h>
-#include <common/materials/linear_elastic.h>
-#include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
-#include <common/solvers/newton_solver.h>
+#include "two_block_patch.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
-#include <deal.II/base/index_set.h>
-#include <deal.II/base/logstream.h>
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/shared_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_vector.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <map>
-#include <memory>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace dealii;
+using namespace TwoBlockPatch;
 
 namespace
 {
-  namespace BoundaryIds
-  {
-    constexpr types::boundary_id lower_bottom   = 1;
-    constexpr types::boundary_id lower_top      = 2; // secondary
-    constexpr types::boundary_id lower_symmetry = 3;
-    constexpr types::boundary_id lower_side     = 4;
-    constexpr types::boundary_id upper_bottom   = 5; // primary
-    constexpr types::boundary_id upper_top      = 6; // loaded
-    constexpr types::boundary_id upper_symmetry = 7;
-    constexpr types::boundary_id upper_side     = 8;
-  } // namespace BoundaryIds
-
-  namespace MaterialIds
-  {
-    constexpr types::material_id lower = 1;
-    constexpr types::material_id upper = 2;
-  } // namespace MaterialIds
-
-  constexpr double pressure_load    = 100.; // MPa
-  constexpr double interface_length = 1.;   // mm
-  constexpr double E_lower          = 70000.;
-  constexpr double E_upper          = 70000.;
-  constexpr double poisson_ratio    = 0.3;
-  constexpr double mu               = 0.3;
-  constexpr double upper_height     = 0.25; // mm
-
-  std::string
-  yes_no(const bool b)
-  {
-    return b ? "yes" : "no";
-  }
-
-  std::string
-  pass_fail(const bool b)
-  {
-    return b ? "PASS" : "FAIL";
-  }
-
-  std::string
-  format(const double value, const unsigned int digits = 6)
-  {
-    std::ostringstream s;
-    s << std::showpoint << std::setprecision(digits) << value;
-    return s.str();
-  }
+  // Equal materials; the upper block is thin.
+  const Setting    setting{70000., 70000., 0.3, 0.25, 100.};
+  constexpr double mu = 0.3;
 
 
 
@@ -116,232 +50,68 @@ namespace
   class PatchTest
   {
   public:
-    explicit PatchTest(const unsigned int degree);
+    explicit PatchTest(const unsigned int degree)
+      : patch(degree, setting, Common::Contact::FrictionLaw::coulomb, mu)
+    {}
 
     void
     run();
 
   private:
     void
-    make_grid();
-    void
     setup_system();
-    void
-    assemble_load(const double                     load_factor,
-                  const AffineConstraints<double> &c,
-                  TrilinosWrappers::MPI::Vector   &rhs) const;
     void
     check_step(const std::string                       &name,
                const double                             U,
                const Common::Solvers::NewtonStatistics &statistics);
 
-    const unsigned int degree;
-    MPI_Comm           mpi_communicator;
-
-    parallel::shared::Triangulation<dim>                         triangulation;
-    const FESystem<dim>                                          fe;
-    const MappingQ<dim>                                          mapping;
-    DoFHandler<dim>                                              dof_handler;
-    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
-
-    Common::Contact::ContactParameters         contact;
-    Common::Solvers::LinearSolverParameters    solver_parameters;
-    Common::Solvers::NonlinearSolverParameters newton_parameters;
-    std::vector<types::global_dof_index>       top_x_dofs;
-    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
-    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
-      contact_problem;
+    Patch<dim>                           patch;
+    std::vector<types::global_dof_index> top_x_dofs;
   };
 
 
 
-  template <int dim>
-  PatchTest<dim>::PatchTest(const unsigned int degree)
-    : degree(degree)
-    , mpi_communicator(MPI_COMM_WORLD)
-    , triangulation(mpi_communicator)
-    , fe(FE_Q<dim>(degree), dim)
-    , mapping(degree)
-    , dof_handler(triangulation)
-  {
-    contact.primary_boundary_id   = BoundaryIds::upper_bottom;
-    contact.secondary_boundary_id = BoundaryIds::lower_top;
-    contact.enforcement  = Common::Contact::Enforcement::lagrange_multiplier;
-    contact.friction_law = Common::Contact::FrictionLaw::coulomb;
-    contact.friction_coefficient      = mu;
-    contact.penalty_stiffness         = 1e6;
-    contact.ncp_factor                = 1.;
-    contact.search_distance           = 0.5;
-    contact.max_active_set_iterations = 10;
-    contact.accelerate_release        = true;
-
-    solver_parameters.type           = Common::Solvers::LinearSolverType::mumps;
-    solver_parameters.tolerance      = 1e-12;
-    solver_parameters.max_iterations = 1000;
-    newton_parameters.max_iterations = contact.max_active_set_iterations;
-    newton_parameters.tolerance      = 1e-10;
-  }
-
-
-
-  // Lower block 4x4, upper block 3x3 coarse cells: the interface nodes do
-  // not match (also after one global refinement: 8 against 6 faces).
-  template <int dim>
-  void
-  PatchTest<dim>::make_grid()
-  {
-    Triangulation<dim> lower, upper;
-    GridGenerator::subdivided_hyper_rectangle(lower,
-                                              {4u, 4u},
-                                              Point<dim>(0., 0.),
-                                              Point<dim>(1., 1.));
-    GridGenerator::subdivided_hyper_rectangle(upper,
-                                              {3u, 3u},
-                                              Point<dim>(0., 1.),
-                                              Point<dim>(1.,
-                                                         1. + upper_height));
-    for (const auto &cell : lower.active_cell_iterators())
-      cell->set_material_id(MaterialIds::lower);
-    for (const auto &cell : upper.active_cell_iterators())
-      cell->set_material_id(MaterialIds::upper);
-    Common::Geometry::join_bodies<dim>({&lower, &upper}, triangulation);
-
-    const double tolerance = 1e-10;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            const Point<dim> c = cell->face(f)->center();
-            if (cell->material_id() == MaterialIds::lower)
-              cell->face(f)->set_boundary_id(
-                std::abs(c[1]) < tolerance      ? BoundaryIds::lower_bottom :
-                std::abs(c[1] - 1.) < tolerance ? BoundaryIds::lower_top :
-                std::abs(c[0]) < tolerance      ? BoundaryIds::lower_symmetry :
-                                                  BoundaryIds::lower_side);
-            else
-              cell->face(f)->set_boundary_id(
-                std::abs(c[1] - 1.) < tolerance ? BoundaryIds::upper_bottom :
-                std::abs(c[1] - 1. - upper_height) < tolerance ?
-                                                  BoundaryIds::upper_top :
-                std::abs(c[0]) < tolerance ? BoundaryIds::upper_symmetry :
-                                             BoundaryIds::upper_side);
-          }
-    triangulation.refine_global(1);
-  }
-
-
-
+  // The lower block rests on u_y = 0 with u_x = 0 at the origin; the
+  // x-displacement of the top of the upper block is prescribed (its value
+  // is set per load step through ExternalLoad::prescribed_displacements).
   template <int dim>
   void
   PatchTest<dim>::setup_system()
   {
-    dof_handler.distribute_dofs(fe);
-    constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(
-      complete_index_set(dof_handler.n_dofs()));
-    DoFTools::make_hanging_node_constraints(
-      dof_handler,
-      constraints_dirichlet_and_hanging_nodes);
+    AffineConstraints<double> constraints;
+    patch.make_grid_and_dofs(constraints);
     const FEValuesExtractors::Scalar x_displacement(0);
     const FEValuesExtractors::Scalar y_displacement(1);
-    VectorTools::interpolate_boundary_values(
-      mapping,
-      dof_handler,
-      BoundaryIds::lower_bottom,
-      Functions::ZeroFunction<dim>(dim),
-      constraints_dirichlet_and_hanging_nodes,
-      fe.component_mask(y_displacement));
+    VectorTools::interpolate_boundary_values(patch.mapping,
+                                             patch.dof_handler,
+                                             BoundaryIds::lower_bottom,
+                                             Functions::ZeroFunction<dim>(dim),
+                                             constraints,
+                                             patch.fe.component_mask(
+                                               y_displacement));
     std::map<types::global_dof_index, double> top_x;
-    VectorTools::interpolate_boundary_values(mapping,
-                                             dof_handler,
+    VectorTools::interpolate_boundary_values(patch.mapping,
+                                             patch.dof_handler,
                                              BoundaryIds::upper_top,
                                              Functions::ZeroFunction<dim>(dim),
                                              top_x,
-                                             fe.component_mask(x_displacement));
+                                             patch.fe.component_mask(
+                                               x_displacement));
     for (const auto &entry : top_x)
       {
         top_x_dofs.push_back(entry.first);
-        constraints_dirichlet_and_hanging_nodes.add_line(entry.first);
+        constraints.add_line(entry.first);
       }
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : patch.dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex(v).norm() < 1e-10)
           {
             const auto dof = cell->vertex_dof_index(v, 0);
-            if (!constraints_dirichlet_and_hanging_nodes.is_constrained(dof))
-              constraints_dirichlet_and_hanging_nodes.add_line(dof);
+            if (!constraints.is_constrained(dof))
+              constraints.add_line(dof);
           }
-    constraints_dirichlet_and_hanging_nodes.close();
-
-    Common::Materials::LinearElasticParameters lower_parameters,
-      upper_parameters;
-    lower_parameters.youngs_modulus = E_lower;
-    lower_parameters.poisson_ratio  = poisson_ratio;
-    upper_parameters.youngs_modulus = E_upper;
-    upper_parameters.poisson_ratio  = poisson_ratio;
-    std::map<types::material_id, Common::Materials::LinearElastic<dim>>
-      materials;
-    materials.emplace(MaterialIds::lower,
-                      Common::Materials::LinearElastic<dim>(lower_parameters));
-    materials.emplace(MaterialIds::upper,
-                      Common::Materials::LinearElastic<dim>(upper_parameters));
-    physics =
-      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(mapping,
-                                                                    fe,
-                                                                    materials);
-
-    contact_problem =
-      std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
-        dof_handler,
-        mapping,
-        *physics,
-        contact,
-        solver_parameters,
-        newton_parameters,
-        E_lower,
-        mpi_communicator);
-    contact_problem->setup(constraints_dirichlet_and_hanging_nodes);
-  }
-
-
-
-  // Consistent nodal forces of the uniform pressure on the top of the upper
-  // block, traction t = (0, -p) times the load factor, distributed through
-  // @p c. Not compressed.
-  template <int dim>
-  void
-  PatchTest<dim>::assemble_load(const double                     load_factor,
-                                const AffineConstraints<double> &c,
-                                TrilinosWrappers::MPI::Vector   &rhs) const
-  {
-    const QGauss<dim - 1>                face_quadrature(degree + 1);
-    FEFaceValues<dim>                    fe_face_values(mapping,
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>                       cell_rhs(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    Tensor<1, dim>                       traction;
-    traction[1] = -load_factor * pressure_load;
-    const FEValuesExtractors::Vector displacement(0);
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::upper_top)
-            {
-              fe_face_values.reinit(cell, f);
-              cell_rhs = 0.;
-              for (const unsigned int q :
-                   fe_face_values.quadrature_point_indices())
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  cell_rhs(i) += fe_face_values[displacement].value(i, q) *
-                                 traction * fe_face_values.JxW(q);
-              cell->get_dof_indices(dof_indices);
-              c.distribute_local_to_global(cell_rhs, dof_indices, rhs);
-            }
+    constraints.close();
+    patch.setup_problem(constraints);
   }
 
 
@@ -353,9 +123,9 @@ namespace
     const double                             U,
     const Common::Solvers::NewtonStatistics &statistics)
   {
-    const auto  &coupling    = contact_problem->coupling();
-    const auto  &enforcement = contact_problem->enforcement();
-    const double limit       = mu * pressure_load * interface_length;
+    const auto  &coupling    = patch.contact_problem->coupling();
+    const auto  &enforcement = patch.contact_problem->enforcement();
+    const double limit       = mu * setting.pressure * interface_length;
 
     // Tangential and normal contact force on the secondary surface, and
     // the status of the closed nodes.
@@ -376,14 +146,16 @@ namespace
       }
 
     // Horizontal reaction on the top: the internal force on its x-DoFs.
-    TrilinosWrappers::MPI::Vector internal(dof_handler.locally_owned_dofs(),
-                                           mpi_communicator);
-    AffineConstraints<double>     none;
+    TrilinosWrappers::MPI::Vector internal(
+      patch.dof_handler.locally_owned_dofs(),
+      patch.mpi_communicator);
+    AffineConstraints<double> none;
     none.close();
-    physics->assemble_internal_force(dof_handler,
-                                     none,
-                                     contact_problem->displacement(),
-                                     internal);
+    patch.physics->assemble_internal_force(
+      patch.dof_handler,
+      none,
+      patch.contact_problem->displacement(),
+      internal);
     internal.compress(VectorOperation::add);
     double reaction = 0.;
     for (const auto dof : top_x_dofs)
@@ -395,7 +167,8 @@ namespace
     deallog << "  closed nodes " << n_closed << ", sticking " << n_stick
             << ", slipping forward " << n_slip_forward << std::endl;
     deallog << "  normal contact force / (p L) = "
-            << format(normal / (pressure_load * interface_length)) << std::endl;
+            << format(normal / (setting.pressure * interface_length))
+            << std::endl;
     deallog << "  tangential contact force / (mu p L) = "
             << format(tangential / limit, 4) << std::endl;
     const bool balance = std::abs(reaction - tangential) < 1e-8 * limit;
@@ -424,25 +197,9 @@ namespace
   void
   PatchTest<dim>::run()
   {
-    make_grid();
     setup_system();
-    deallog << "Q" << degree << ": " << triangulation.n_active_cells()
-            << " cells, " << dof_handler.n_dofs() << " DoFs, "
-            << contact_problem->coupling().secondary_surface().n_faces()
-            << " secondary and "
-            << contact_problem->coupling().primary_surface().n_faces()
-            << " primary faces" << std::endl;
-
-    Common::Problems::ExternalLoad load;
-    load.add = [this](const double                     load_factor,
-                      const AffineConstraints<double> &c,
-                      TrilinosWrappers::MPI::Vector   &vector) {
-      assemble_load(load_factor, c, vector);
-    };
-    load.magnitude = [](const double load_factor) {
-      return load_factor * pressure_load * interface_length;
-    };
-    double U = 0.;
+    Common::Problems::ExternalLoad load = patch.external_load();
+    double                         U    = 0.;
     load.prescribed_displacements =
       [this, &U](const double,
                  std::map<types::global_dof_index, double> &values) {
@@ -457,10 +214,10 @@ namespace
     for (const auto &[name, shift] : steps)
       {
         U                     = shift;
-        const auto statistics = contact_problem->solve(1., load, quiet);
+        const auto statistics = patch.contact_problem->solve(1., load, quiet);
         if (!statistics.converged)
           deallog << "Newton failure: " << statistics.failure << std::endl;
-        contact_problem->commit();
+        patch.contact_problem->commit();
         check_step(name, U, statistics);
       }
   }

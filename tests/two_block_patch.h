@@ -1,0 +1,297 @@
+/*
+ * Shared set-up of the two-block contact patch tests (tests/common): two
+ * elastic blocks in plane strain with non-matching meshes, the lower one
+ * [0,1]x[0,1] mm (4x4 coarse cells) and the upper one [0,1]x[1,1+H] mm
+ * (3x3 coarse cells), one global refinement, and a uniform pressure on the
+ * top of the upper block. Contact: secondary = top of the lower block,
+ * primary = bottom of the upper block, dual Lagrange multipliers, semismooth
+ * Newton. Each test adds its own Dirichlet conditions and checks.
+ */
+#ifndef tests_two_block_patch_h
+#define tests_two_block_patch_h
+
+#include <common/contact/contact_parameters.h>
+#include <common/geometry/two_body_meshes.h>
+#include <common/materials/linear_elastic.h>
+#include <common/physics/small_strain_elasticity.h>
+#include <common/problems/small_strain_contact_problem.h>
+#include <common/solvers/newton_solver.h>
+
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace TwoBlockPatch
+{
+  using namespace dealii;
+
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id lower_bottom   = 1;
+    constexpr types::boundary_id lower_top      = 2; // secondary
+    constexpr types::boundary_id lower_symmetry = 3;
+    constexpr types::boundary_id lower_side     = 4;
+    constexpr types::boundary_id upper_bottom   = 5; // primary
+    constexpr types::boundary_id upper_top      = 6; // loaded
+    constexpr types::boundary_id upper_symmetry = 7;
+    constexpr types::boundary_id upper_side     = 8;
+  } // namespace BoundaryIds
+
+  namespace MaterialIds
+  {
+    constexpr types::material_id lower = 1;
+    constexpr types::material_id upper = 2;
+  } // namespace MaterialIds
+
+  constexpr double interface_length = 1.; // mm
+
+  inline std::string
+  yes_no(const bool b)
+  {
+    return b ? "yes" : "no";
+  }
+
+  inline std::string
+  pass_fail(const bool b)
+  {
+    return b ? "PASS" : "FAIL";
+  }
+
+  inline std::string
+  format(const double value, const unsigned int digits = 6)
+  {
+    std::ostringstream s;
+    s << std::showpoint << std::setprecision(digits) << value;
+    return s.str();
+  }
+
+  /** Data of the two blocks (MPa, mm). */
+  struct Setting
+  {
+    double E_lower;
+    double E_upper;
+    double poisson_ratio;
+    double upper_height;
+    double pressure;
+  };
+
+  /**
+   * The two blocks, their discretisation and the contact problem.
+   */
+  template <int dim>
+  class Patch
+  {
+  public:
+    Patch(const unsigned int                 degree,
+          const Setting                     &setting,
+          const Common::Contact::FrictionLaw friction_law,
+          const double                       friction_coefficient)
+      : degree(degree)
+      , setting(setting)
+      , mpi_communicator(MPI_COMM_WORLD)
+      , triangulation(mpi_communicator)
+      , fe(FE_Q<dim>(degree), dim)
+      , mapping(degree)
+      , dof_handler(triangulation)
+    {
+      contact.primary_boundary_id   = BoundaryIds::upper_bottom;
+      contact.secondary_boundary_id = BoundaryIds::lower_top;
+      contact.enforcement  = Common::Contact::Enforcement::lagrange_multiplier;
+      contact.friction_law = friction_law;
+      contact.friction_coefficient      = friction_coefficient;
+      contact.penalty_stiffness         = 1e6;
+      contact.ncp_factor                = 1.;
+      contact.search_distance           = 0.5;
+      contact.max_active_set_iterations = 10;
+      contact.accelerate_release        = true;
+
+      solver_parameters.type      = Common::Solvers::LinearSolverType::mumps;
+      solver_parameters.tolerance = 1e-12;
+      solver_parameters.max_iterations = 1000;
+      newton_parameters.max_iterations = contact.max_active_set_iterations;
+      newton_parameters.tolerance      = 1e-10;
+    }
+
+    /**
+     * Mesh both blocks (the interface nodes do not match, also after the
+     * global refinement: 8 against 6 faces), set boundary ids, distribute
+     * DoFs and start @p constraints with the hanging-node constraints.
+     */
+    void
+    make_grid_and_dofs(AffineConstraints<double> &constraints)
+    {
+      Triangulation<dim> lower, upper;
+      const double       top = 1. + setting.upper_height;
+      GridGenerator::subdivided_hyper_rectangle(lower,
+                                                {4u, 4u},
+                                                Point<dim>(0., 0.),
+                                                Point<dim>(1., 1.));
+      GridGenerator::subdivided_hyper_rectangle(upper,
+                                                {3u, 3u},
+                                                Point<dim>(0., 1.),
+                                                Point<dim>(1., top));
+      for (const auto &cell : lower.active_cell_iterators())
+        cell->set_material_id(MaterialIds::lower);
+      for (const auto &cell : upper.active_cell_iterators())
+        cell->set_material_id(MaterialIds::upper);
+      Common::Geometry::join_bodies<dim>({&lower, &upper}, triangulation);
+
+      const double tolerance = 1e-10;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<dim> c = cell->face(f)->center();
+              if (cell->material_id() == MaterialIds::lower)
+                cell->face(f)->set_boundary_id(
+                  std::abs(c[1]) < tolerance      ? BoundaryIds::lower_bottom :
+                  std::abs(c[1] - 1.) < tolerance ? BoundaryIds::lower_top :
+                  std::abs(c[0]) < tolerance ? BoundaryIds::lower_symmetry :
+                                               BoundaryIds::lower_side);
+              else
+                cell->face(f)->set_boundary_id(
+                  std::abs(c[1] - 1.) < tolerance  ? BoundaryIds::upper_bottom :
+                  std::abs(c[1] - top) < tolerance ? BoundaryIds::upper_top :
+                  std::abs(c[0]) < tolerance ? BoundaryIds::upper_symmetry :
+                                               BoundaryIds::upper_side);
+            }
+      triangulation.refine_global(1);
+
+      dof_handler.distribute_dofs(fe);
+      constraints.clear();
+      constraints.reinit(complete_index_set(dof_handler.n_dofs()));
+      DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    }
+
+    /**
+     * Materials, physics and the contact problem, with the closed
+     * Dirichlet and hanging-node @p constraints.
+     */
+    void
+    setup_problem(const AffineConstraints<double> &constraints)
+    {
+      Common::Materials::LinearElasticParameters lower_parameters,
+        upper_parameters;
+      lower_parameters.youngs_modulus = setting.E_lower;
+      lower_parameters.poisson_ratio  = setting.poisson_ratio;
+      upper_parameters.youngs_modulus = setting.E_upper;
+      upper_parameters.poisson_ratio  = setting.poisson_ratio;
+      std::map<types::material_id, Common::Materials::LinearElastic<dim>>
+        materials;
+      materials.emplace(MaterialIds::lower,
+                        Common::Materials::LinearElastic<dim>(
+                          lower_parameters));
+      materials.emplace(MaterialIds::upper,
+                        Common::Materials::LinearElastic<dim>(
+                          upper_parameters));
+      physics = std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+        mapping,
+        fe,
+        materials);
+
+      contact_problem =
+        std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
+          dof_handler,
+          mapping,
+          *physics,
+          contact,
+          solver_parameters,
+          newton_parameters,
+          setting.E_lower,
+          mpi_communicator);
+      contact_problem->setup(constraints);
+
+      deallog << "Q" << degree << ": " << triangulation.n_active_cells()
+              << " cells, " << dof_handler.n_dofs() << " DoFs, "
+              << contact_problem->coupling().secondary_surface().n_faces()
+              << " secondary and "
+              << contact_problem->coupling().primary_surface().n_faces()
+              << " primary faces" << std::endl;
+    }
+
+    /**
+     * The uniform pressure on the top of the upper block: consistent nodal
+     * forces of the traction (0, -p) times the load factor, distributed
+     * through the constraints; the load magnitude is p L.
+     */
+    Common::Problems::ExternalLoad
+    external_load() const
+    {
+      Common::Problems::ExternalLoad load;
+      load.add = [this](const double                     load_factor,
+                        const AffineConstraints<double> &c,
+                        TrilinosWrappers::MPI::Vector   &rhs) {
+        const QGauss<dim - 1> face_quadrature(degree + 1);
+        FEFaceValues<dim>     fe_face_values(mapping,
+                                         fe,
+                                         face_quadrature,
+                                         update_values | update_JxW_values);
+        const unsigned int    dofs_per_cell = fe.n_dofs_per_cell();
+        Vector<double>        cell_rhs(dofs_per_cell);
+        std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+        Tensor<1, dim>                       traction;
+        traction[1] = -load_factor * setting.pressure;
+        const FEValuesExtractors::Vector displacement(0);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() == BoundaryIds::upper_top)
+                {
+                  fe_face_values.reinit(cell, f);
+                  cell_rhs = 0.;
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      cell_rhs(i) += fe_face_values[displacement].value(i, q) *
+                                     traction * fe_face_values.JxW(q);
+                  cell->get_dof_indices(dof_indices);
+                  c.distribute_local_to_global(cell_rhs, dof_indices, rhs);
+                }
+      };
+      const double p = setting.pressure;
+      load.magnitude = [p](const double load_factor) {
+        return load_factor * p * interface_length;
+      };
+      return load;
+    }
+
+    const unsigned int degree;
+    const Setting      setting;
+    MPI_Comm           mpi_communicator;
+
+    parallel::shared::Triangulation<dim>                         triangulation;
+    const FESystem<dim>                                          fe;
+    const MappingQ<dim>                                          mapping;
+    DoFHandler<dim>                                              dof_handler;
+    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
+
+    Common::Contact::ContactParameters         contact;
+    Common::Solvers::LinearSolverParameters    solver_parameters;
+    Common::Solvers::NonlinearSolverParameters newton_parameters;
+    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
+      contact_problem;
+  };
+} // namespace TwoBlockPatch
+
+#endif
