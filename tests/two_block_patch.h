@@ -121,6 +121,7 @@ namespace TwoBlockPatch
       contact.friction_coefficient      = friction_coefficient;
       contact.penalty_stiffness         = 1e6;
       contact.ncp_factor                = 1.;
+      contact.tangential_ncp_factor     = 0.5;
       contact.search_distance           = 0.5;
       contact.max_active_set_iterations = 10;
       contact.accelerate_release        = true;

@@ -143,6 +143,16 @@ namespace Common
 
 
     template <int dim>
+    double
+    ContactEnforcement<dim>::tangential_ncp_constant(const unsigned int j) const
+    {
+      return parameters.tangential_ncp_factor * reference_modulus /
+             coupling.row(j).mesh_size;
+    }
+
+
+
+    template <int dim>
     void
     ContactEnforcement<dim>::initialize_active_set()
     {
@@ -595,7 +605,7 @@ namespace Common
                                       parameters.friction_coefficient *
                                         std::max(0.,
                                                  state.pressures[j] - c * gap),
-                                      c);
+                                      tangential_ncp_constant(j));
       return {C_n, C_t};
     }
 
@@ -727,17 +737,20 @@ namespace Common
             std::max(0.,
                      state.pressures[j] -
                        c * coupling.weighted_gap(j, u) / row.weight);
-          const Tensor<1, dim> v = slip_increment(j, u);
+          const Tensor<1, dim> v   = slip_increment(j, u);
+          const double         c_t = tangential_ncp_constant(j);
           if (CoulombLaw::is_sticking(state.tangential_tractions[j],
                                       v,
                                       bound,
-                                      c))
+                                      c_t))
             proposed.status[j] = PointStatus::stick;
           else
             {
               proposed.status[j] = PointStatus::slip;
               proposed.slip_direction[j] =
-                CoulombLaw::slip_direction(state.tangential_tractions[j], v, c);
+                CoulombLaw::slip_direction(state.tangential_tractions[j],
+                                           v,
+                                           c_t);
             }
         }
 

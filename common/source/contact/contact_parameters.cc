@@ -55,6 +55,18 @@ namespace Common
                           "semismooth Newton method (E: secondary Young's "
                           "modulus, h: local mesh size). Affects the "
                           "iteration path only. Dimensionless, > 0.");
+        prm.declare_entry("Tangential NCP constant factor",
+                          "0.5",
+                          Patterns::Double(0.),
+                          "Coulomb friction only: factor c_T in the "
+                          "tangential complementarity constant c = c_T E/h "
+                          "that weighs the slip increment against the "
+                          "traction in the stick/slip decision. Values "
+                          "below the normal factor make a node slip only "
+                          "once its traction nears the bound, which avoids "
+                          "stick/slip cycling where nearly every node "
+                          "sticks. Affects the iteration path only. "
+                          "Dimensionless, > 0.");
         prm.declare_entry("Search distance",
                           "5.0",
                           Patterns::Double(0.),
@@ -102,7 +114,9 @@ namespace Common
                                   0.);
         penalty_stiffness    = prm.get_double("Penalty stiffness");
         ncp_factor           = prm.get_double("NCP constant factor");
-        search_distance      = prm.get_double("Search distance");
+        tangential_ncp_factor =
+          prm.get_double("Tangential NCP constant factor");
+        search_distance = prm.get_double("Search distance");
         max_active_set_iterations =
           prm.get_integer("Maximum active set iterations");
         accelerate_release = prm.get_bool("Accelerate active set release");
@@ -114,6 +128,9 @@ namespace Common
       AssertThrow(penalty_stiffness > 0.,
                   ExcMessage("Contact: 'Penalty stiffness' must be "
                              "positive."));
+      AssertThrow(tangential_ncp_factor > 0.,
+                  ExcMessage("Contact: 'Tangential NCP constant factor' "
+                             "must be positive."));
       AssertThrow(ncp_factor > 0.,
                   ExcMessage("Contact: 'NCP constant factor' must be "
                              "positive."));

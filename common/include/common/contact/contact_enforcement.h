@@ -219,7 +219,8 @@ namespace Common
        * @brief Apply the active-set rule to every paired node: the normal
        * rule, then for closed nodes with friction the stick/slip rule
        * CoulombLaw::is_sticking() with the bound
-       * \f$\mu\max(0, \lambda - c\,g)\f$ and the slip direction.
+       * \f$\mu\max(0, \lambda - c\,g)\f$, the tangential constant
+       * tangential_ncp_constant() and the slip direction.
        *
        * If the rule only opens points, the opened band is extrapolated
        * (unless switched off): a closed node j is opened too if an opened
@@ -289,6 +290,11 @@ namespace Common
       /** @brief Complementarity constant of node j (MPa/mm). */
       double
       ncp_constant(const unsigned int j) const;
+
+      /** @brief Tangential complementarity constant of node j, used in
+       * the stick/slip decision of Coulomb friction (MPa/mm). */
+      double
+      tangential_ncp_constant(const unsigned int j) const;
 
     private:
       /** State of all nodes that an accepted step must keep. */

@@ -59,6 +59,10 @@ namespace Common
       /** Factor c_N of the complementarity constant c = c_N E / h
        * (dimensionless). Changes the iteration path, never the answer. */
       double ncp_factor;
+      /** Factor c_T of the tangential complementarity constant
+       * c = c_T E / h (dimensionless); Coulomb friction only. Changes the
+       * iteration path, never the answer. */
+      double tangential_ncp_factor;
       /** Largest initial gap for which a secondary point is paired (mm). */
       double search_distance;
       /** Largest number of semismooth Newton iterations that may change the
