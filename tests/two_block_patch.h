@@ -19,6 +19,7 @@
 
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -85,15 +86,28 @@ namespace TwoBlockPatch
     return s.str();
   }
 
-  /** Data of the two blocks (MPa, mm). */
+  /** Data of the two blocks (MPa, mm). With axisymmetric kinematics the
+   * blocks are two stacked cylinders of radius 1 about the axis x = 0. */
   struct Setting
   {
-    double E_lower;
-    double E_upper;
-    double poisson_ratio;
-    double upper_height;
-    double pressure;
+    double                      E_lower;
+    double                      E_upper;
+    double                      poisson_ratio;
+    double                      upper_height;
+    double                      pressure;
+    Common::Physics::Kinematics kinematics =
+      Common::Physics::Kinematics::cartesian;
   };
+
+  /** Loaded area of the interface: L (mm, per unit thickness) or
+   * pi L^2 (mm^2, axisymmetric). */
+  inline double
+  interface_area(const Setting &setting)
+  {
+    return setting.kinematics == Common::Physics::Kinematics::axisymmetric ?
+             numbers::PI * interface_length * interface_length :
+             interface_length;
+  }
 
   /**
    * The two blocks, their discretisation and the contact problem.
@@ -208,7 +222,8 @@ namespace TwoBlockPatch
       physics = std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
         mapping,
         fe,
-        materials);
+        materials,
+        setting.kinematics);
 
       contact_problem =
         std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
@@ -233,7 +248,8 @@ namespace TwoBlockPatch
     /**
      * The uniform pressure on the top of the upper block: consistent nodal
      * forces of the traction (0, -p) times the load factor, distributed
-     * through the constraints; the load magnitude is p L.
+     * through the constraints (with the ring measure if axisymmetric); the
+     * load magnitude is p times interface_area().
      */
     Common::Problems::ExternalLoad
     external_load() const
@@ -246,7 +262,8 @@ namespace TwoBlockPatch
         FEFaceValues<dim>     fe_face_values(mapping,
                                          fe,
                                          face_quadrature,
-                                         update_values | update_JxW_values);
+                                         update_values | update_JxW_values |
+                                           update_quadrature_points);
         const unsigned int    dofs_per_cell = fe.n_dofs_per_cell();
         Vector<double>        cell_rhs(dofs_per_cell);
         std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -265,14 +282,17 @@ namespace TwoBlockPatch
                        fe_face_values.quadrature_point_indices())
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       cell_rhs(i) += fe_face_values[displacement].value(i, q) *
-                                     traction * fe_face_values.JxW(q);
+                                     traction * fe_face_values.JxW(q) *
+                                     Common::Physics::measure_factor(
+                                       setting.kinematics,
+                                       fe_face_values.quadrature_point(q));
                   cell->get_dof_indices(dof_indices);
                   c.distribute_local_to_global(cell_rhs, dof_indices, rhs);
                 }
       };
-      const double p = setting.pressure;
-      load.magnitude = [p](const double load_factor) {
-        return load_factor * p * interface_length;
+      const double force = setting.pressure * interface_area(setting);
+      load.magnitude     = [force](const double load_factor) {
+        return load_factor * force;
       };
       return load;
     }

@@ -1,9 +1,11 @@
 #include <common/contact/mortar_coupling.h>
 
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <map>
 
 namespace Common
@@ -26,8 +28,17 @@ namespace Common
     MortarCoupling<dim>::reinit(const ContactSurface<dim> &secondary_surface,
                                 const ContactSurface<dim> &primary_surface,
                                 const ContactSearch<dim>  &search,
-                                const double               search_distance)
+                                const double               search_distance,
+                                const bool                 axisymmetric)
     {
+      AssertThrow(dim == 2 || !axisymmetric,
+                  ExcMessage("Axisymmetric mortar coupling needs 2D "
+                             "surfaces."));
+      // Ring measure 2 pi x of an axisymmetric model, 1 otherwise.
+      const auto ring = [axisymmetric](const Point<dim> &x) {
+        return axisymmetric ? 2. * numbers::PI * x[0] : 1.;
+      };
+
       secondary = &secondary_surface;
       primary   = &primary_surface;
 
@@ -60,8 +71,9 @@ namespace Common
             {
               const Point<dim - 1> &eta = face_quadrature.point(q);
               secondary->shape_values(s, eta, N);
-              const double JxW =
-                secondary->jacobian(s, eta) * face_quadrature.weight(q);
+              const double JxW = secondary->jacobian(s, eta) *
+                                 face_quadrature.weight(q) *
+                                 ring(secondary->point(s, eta));
               face_measure += JxW;
               for (unsigned int a = 0; a < n_shape; ++a)
                 {
@@ -144,7 +156,8 @@ namespace Common
                         primary->unit_normal(m, projection.eta) * n >= 0.)
                       continue;
 
-                    const double JxW = secondary->jacobian(s, xi) * weight;
+                    const double JxW =
+                      secondary->jacobian(s, xi) * weight * ring(x);
                     covered_measure += JxW;
                     primary->shape_values(m, projection.eta, N_primary);
                     const auto &primary_nodes = primary->face(m).nodes;
@@ -186,10 +199,17 @@ namespace Common
               }
           }
 
+      // A node without measure carries no contact force and has no
+      // condition: in an axisymmetric model the Q2 vertex on the axis, whose
+      // ring-weighted D_j = int N_j 2 pi r ds vanishes.
+      double largest_weight = 0.;
+      for (const auto &row : rows)
+        largest_weight = std::max(largest_weight, row.weight);
       for (unsigned int j = 0; j < n_nodes; ++j)
         {
           rows[j].normal      = secondary->node(j).normal;
-          rows[j].has_partner = node_covered[j] && !weights[j].empty();
+          rows[j].has_partner = node_covered[j] && !weights[j].empty() &&
+                                rows[j].weight > 1e-10 * largest_weight;
           if (rows[j].has_partner)
             rows[j].primary_weights.assign(weights[j].begin(),
                                            weights[j].end());

@@ -1,5 +1,6 @@
 #include <common/physics/small_strain_elasticity.h>
 
+#include <deal.II/base/numbers.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
@@ -10,16 +11,40 @@ namespace Common
     using namespace dealii;
 
     template <int dim>
+    double
+    measure_factor(const Kinematics kinematics, const Point<dim> &x)
+    {
+      return kinematics == Kinematics::axisymmetric ? 2. * numbers::PI * x[0] :
+                                                      1.;
+    }
+
+
+
+    template <int dim>
     SmallStrainElasticity<dim>::SmallStrainElasticity(
       const Mapping<dim>       &mapping,
       const FiniteElement<dim> &fe,
       const std::map<types::material_id, Materials::LinearElastic<dim>>
-        &materials)
+                      &materials,
+      const Kinematics kinematics)
       : mapping(mapping)
       , fe(fe)
       , materials(materials)
+      , model_kinematics(kinematics)
       , quadrature(fe.degree + 1)
-    {}
+    {
+      AssertThrow(dim == 2 || kinematics == Kinematics::cartesian,
+                  ExcMessage("Axisymmetric kinematics needs a 2D model."));
+    }
+
+
+
+    template <int dim>
+    Kinematics
+    SmallStrainElasticity<dim>::kinematics() const
+    {
+      return model_kinematics;
+    }
 
 
 
@@ -54,31 +79,54 @@ namespace Common
       cell_matrices.assign(dof_handler.get_triangulation().n_active_cells(),
                            FullMatrix<double>());
 
-      FEValues<dim>                        fe_values(mapping,
+      const bool    axisymmetric = model_kinematics == Kinematics::axisymmetric;
+      FEValues<dim> fe_values(mapping,
                               fe,
                               quadrature,
-                              update_gradients | update_JxW_values);
+                              update_values | update_gradients |
+                                update_JxW_values | update_quadrature_points);
       const FEValuesExtractors::Vector     displacement(0);
       std::vector<SymmetricTensor<2, dim>> sym_grad(dofs_per_cell);
+      // Hoop strain u_r/r of each shape function (axisymmetric only).
+      std::vector<double> hoop(dofs_per_cell, 0.);
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            const auto         &C = material(cell->material_id()).tangent();
+            const auto         &law    = material(cell->material_id());
+            const auto         &C      = law.tangent();
+            const double        lambda = law.lame_lambda(), mu = law.lame_mu();
             FullMatrix<double> &K = cell_matrices[cell->active_cell_index()];
             K.reinit(dofs_per_cell, dofs_per_cell);
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
+                const Point<dim> &x = fe_values.quadrature_point(q);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  sym_grad[i] =
-                    fe_values[displacement].symmetric_gradient(i, q);
-                const double JxW = fe_values.JxW(q);
+                  {
+                    sym_grad[i] =
+                      fe_values[displacement].symmetric_gradient(i, q);
+                    if (axisymmetric)
+                      hoop[i] = fe_values[displacement].value(i, q)[0] / x[0];
+                  }
+                const double JxW =
+                  fe_values.JxW(q) * measure_factor(model_kinematics, x);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   {
                     const SymmetricTensor<2, dim> C_eps_i = C * sym_grad[i];
+                    // With the hoop strain: sigma_i : eps_j gains
+                    // lambda (tr_i e_j + e_i tr_j + e_i e_j) + 2 mu e_i e_j,
+                    // tr the in-plane trace and e the hoop strain.
+                    const double tr_i = trace(sym_grad[i]);
                     for (unsigned int j = 0; j <= i; ++j)
-                      K(i, j) += (C_eps_i * sym_grad[j]) * JxW;
+                      {
+                        double value = C_eps_i * sym_grad[j];
+                        if (axisymmetric)
+                          value += lambda * (tr_i * hoop[j] +
+                                             hoop[i] * trace(sym_grad[j])) +
+                                   (lambda + 2. * mu) * hoop[i] * hoop[j];
+                        K(i, j) += value * JxW;
+                      }
                   }
               }
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -162,7 +210,9 @@ namespace Common
     template <int dim>
     StressPostprocessor<dim>::StressPostprocessor(
       const SmallStrainElasticity<dim> &physics)
-      : DataPostprocessorTensor<dim>("stress", update_gradients)
+      : DataPostprocessorTensor<dim>("stress",
+                                     update_values | update_gradients |
+                                       update_quadrature_points)
       , physics(physics)
     {}
 
@@ -181,7 +231,16 @@ namespace Common
           Tensor<2, dim> grad;
           for (unsigned int d = 0; d < dim; ++d)
             grad[d] = inputs.solution_gradients[q][d];
-          const SymmetricTensor<2, dim> sigma = law.stress(symmetrize(grad));
+          SymmetricTensor<2, dim> sigma = law.stress(symmetrize(grad));
+          if (physics.kinematics() == Kinematics::axisymmetric)
+            {
+              // Hoop strain u_r/r, and its limit du_r/dr on the axis.
+              const double r = inputs.evaluation_points[q][0];
+              const double hoop =
+                (r > 1e-12 ? inputs.solution_values[q][0] / r : grad[0][0]);
+              for (unsigned int d = 0; d < dim; ++d)
+                sigma[d][d] += law.lame_lambda() * hoop;
+            }
           for (unsigned int d = 0; d < dim; ++d)
             for (unsigned int e = 0; e < dim; ++e)
               computed_quantities[q](
@@ -190,6 +249,10 @@ namespace Common
         }
     }
 
+    template double
+    measure_factor(const Kinematics, const Point<2> &);
+    template double
+    measure_factor(const Kinematics, const Point<3> &);
     template class SmallStrainElasticity<2>;
     template class SmallStrainElasticity<3>;
     template class StressPostprocessor<2>;

@@ -75,7 +75,8 @@ namespace Common
       mortar.reinit(*secondary,
                     *primary,
                     *search,
-                    contact_parameters.search_distance);
+                    contact_parameters.search_distance,
+                    physics.kinematics() == Physics::Kinematics::axisymmetric);
       contact_enforcement =
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            mortar,

@@ -39,11 +39,12 @@ namespace Common
       double weight = 0.;
       /** Averaged outward unit normal of the secondary surface at j. */
       dealii::Tensor<1, dim> normal;
-      /** (primary node k, M_jk in mm^(dim-1)), sorted by k. */
+      /** (primary node k, M_jk in mm^(dim-1), or mm^2 if axisymmetric),
+       * sorted by k. */
       std::vector<std::pair<unsigned int, double>> primary_weights;
       /** True if every face around j is fully covered by primary faces
-       * within the search distance: only such nodes can come into
-       * contact. */
+       * within the search distance and j has a measure (D_j > 0): only
+       * such nodes can come into contact. */
       bool has_partner = false;
       /** Size of the largest face around j (mm). */
       double mesh_size = 0.;
@@ -77,12 +78,18 @@ namespace Common
        * @param[in] search Search structure over @p primary.
        * @param[in] search_distance Points with |gap| above this are not
        * paired (mm).
+       * @param[in] axisymmetric If true (2D only), the surfaces are
+       * meridians of surfaces of revolution about the axis x = 0: every
+       * integral, the dual basis included, carries the ring measure
+       * \f$2\pi x\f$, so D and M are areas (mm^2) and the pressures of a
+       * Lagrange-multiplier enforcement are forces per area.
        */
       void
       reinit(const ContactSurface<dim> &secondary,
              const ContactSurface<dim> &primary,
              const ContactSearch<dim>  &search,
-             const double               search_distance);
+             const double               search_distance,
+             const bool                 axisymmetric = false);
 
       /** @brief Number of rows (= secondary nodes). */
       unsigned int
