@@ -8,6 +8,7 @@
 
 #include <common/contact/contact_parameters.h>
 #include <common/io/output_parameters.h>
+#include <common/io/run_control.h>
 #include <common/materials/linear_elastic.h>
 #include <common/solvers/linear_solver.h>
 #include <common/solvers/load_stepping.h>
@@ -69,18 +70,6 @@ namespace CgsRoller
     double force_per_thickness;
   };
 
-  /** Subsection "Run control". */
-  struct RunControlParameters
-  {
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    bool dry_run;
-    bool measure_contact_cost;
-  };
-
   /**
    * All parameters of a cgs_roller run, read from one .prm file.
    */
@@ -103,7 +92,7 @@ namespace CgsRoller
     Common::Solvers::LinearSolverParameters    linear_solver;
     Common::Solvers::LoadSteppingParameters    load_stepping;
     Common::IO::OutputParameters               output;
-    RunControlParameters                       run_control;
+    Common::IO::RunControlParameters           run_control;
 
     /** The parameters as read, for used_parameters.prm. */
     std::string used_parameters;

@@ -137,5 +137,20 @@ namespace Common
           }
       return e_star / (numbers::PI * R) * integral;
     }
+
+
+    std::vector<PunchReferencePoint>
+    fenet_punch_fe_reference()
+    {
+      return {{0.5, 70.5, 71.2, 0.2, 0.},
+              {5., 79.8, 77.9, 2.2, 2.6},
+              {10., 85.9, 86.3, 4.9, 4.0},
+              {20., 94.2, 91.1, 9.2, 9.2},
+              {30., 104.2, 106.3, 10.3, 10.7},
+              {35., 121.5, 138.9, 12.1, 13.9},
+              {39., 325., 302., 32., 30.},
+              {40., 386., 353., 38.9, 35.2},
+              {45., 0., 0., 0., 0.}};
+    }
   } // namespace Analytic
 } // namespace Common

@@ -26,6 +26,8 @@
 #ifndef common_analytic_rounded_punch_h
 #define common_analytic_rounded_punch_h
 
+#include <vector>
+
 namespace Common
 {
   namespace Analytic
@@ -91,6 +93,25 @@ namespace Common
       double P;
       double a;
     };
+
+    /** One radius of the FE reference curves of benchmark 2. */
+    struct PunchReferencePoint
+    {
+      /** Radius r (mm). */
+      double r;
+      /** Contact pressure, MSC.Marc and Abaqus, mu = 0.1 (MPa). */
+      double pressure_marc, pressure_abaqus;
+      /** Tangential traction, MSC.Marc and Abaqus, mu = 0.1 (MPa). */
+      double traction_marc, traction_abaqus;
+    };
+
+    /**
+     * @brief The MSC.Marc and Abaqus contact curves of FENET benchmark 2
+     * (NAFEMS R0094, digitised in solids4foam; REFERENCES.md 2.2) at the
+     * tabulated radii; the peak is listed at r = 40 mm.
+     */
+    std::vector<PunchReferencePoint>
+    fenet_punch_fe_reference();
   } // namespace Analytic
 } // namespace Common
 
