@@ -900,8 +900,10 @@ namespace Common
           bool any_active = false, any_unpaired = false;
           for (const unsigned int j : surface.face(f).nodes)
             {
-              any_active   = any_active || state.status[j] != PointStatus::open;
-              any_unpaired = any_unpaired || !coupling.row(j).has_partner;
+              any_active = any_active || state.status[j] != PointStatus::open;
+              // A node without measure (on the axis) bounds no search.
+              any_unpaired = any_unpaired || (!coupling.row(j).has_partner &&
+                                              coupling.row(j).weight > 0.);
             }
           if (any_active && any_unpaired)
             return true;

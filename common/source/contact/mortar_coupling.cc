@@ -207,9 +207,11 @@ namespace Common
         largest_weight = std::max(largest_weight, row.weight);
       for (unsigned int j = 0; j < n_nodes; ++j)
         {
-          rows[j].normal      = secondary->node(j).normal;
-          rows[j].has_partner = node_covered[j] && !weights[j].empty() &&
-                                rows[j].weight > 1e-10 * largest_weight;
+          rows[j].normal = secondary->node(j).normal;
+          if (rows[j].weight <= 1e-10 * largest_weight)
+            rows[j].weight = 0.;
+          rows[j].has_partner =
+            node_covered[j] && !weights[j].empty() && rows[j].weight > 0.;
           if (rows[j].has_partner)
             rows[j].primary_weights.assign(weights[j].begin(),
                                            weights[j].end());

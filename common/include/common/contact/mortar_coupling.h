@@ -43,8 +43,9 @@ namespace Common
        * sorted by k. */
       std::vector<std::pair<unsigned int, double>> primary_weights;
       /** True if every face around j is fully covered by primary faces
-       * within the search distance and j has a measure (D_j > 0): only
-       * such nodes can come into contact. */
+       * within the search distance and j has a measure (D_j > 0; a
+       * node without measure gets D_j = 0 exactly): only such nodes can
+       * come into contact. */
       bool has_partner = false;
       /** Size of the largest face around j (mm). */
       double mesh_size = 0.;

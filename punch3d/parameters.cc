@@ -1,0 +1,199 @@
+#include "parameters.h"
+
+#include <sstream>
+
+namespace Punch3d
+{
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Punch radius",
+                        "50",
+                        Patterns::Double(0.),
+                        "Radius of the cylindrical punch. Units: mm.");
+      prm.declare_entry("Punch height",
+                        "100",
+                        Patterns::Double(0.),
+                        "Height of the punch. Units: mm.");
+      prm.declare_entry("Fillet radius",
+                        "10",
+                        Patterns::Double(0.),
+                        "Radius of the rounded edge between the punch's "
+                        "flat face and its side; less than the punch radius "
+                        "and a third of the punch height. Units: mm.");
+      prm.declare_entry("Foundation radius",
+                        "100",
+                        Patterns::Double(0.),
+                        "Radius of the cylindrical foundation; larger than "
+                        "the punch radius. Units: mm.");
+      prm.declare_entry("Foundation height",
+                        "200",
+                        Patterns::Double(0.),
+                        "Height of the foundation. Units: mm.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      punch_radius      = prm.get_double("Punch radius");
+      punch_height      = prm.get_double("Punch height");
+      fillet_radius     = prm.get_double("Fillet radius");
+      foundation_radius = prm.get_double("Foundation radius");
+      foundation_height = prm.get_double("Foundation height");
+    }
+    prm.leave_subsection();
+    AssertThrow(punch_radius > 0. && punch_height > 0. &&
+                  foundation_height > 0.,
+                ExcMessage("Geometry: radii and heights must be positive."));
+    AssertThrow(fillet_radius > 0. && fillet_radius < punch_radius &&
+                  3. * fillet_radius < punch_height,
+                ExcMessage("Geometry: 'Fillet radius' must be positive, less "
+                           "than the punch radius and a third of its "
+                           "height."));
+    AssertThrow(foundation_radius > punch_radius,
+                ExcMessage("Geometry: 'Foundation radius' must exceed the "
+                           "punch radius."));
+  }
+
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Element degree",
+                        "2",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the FE_Q displacement element "
+                        "and of the geometry mapping (1: Q1, 2: Q2).");
+      prm.declare_entry("Number of global refinements",
+                        "0",
+                        Patterns::Integer(0, 6),
+                        "Uniform refinements of the coarse mesh (cells of "
+                        "about a quarter of the punch radius).");
+      prm.declare_entry("Number of contact refinements",
+                        "4",
+                        Patterns::Integer(0, 12),
+                        "Graded refinements toward the contact strip (the "
+                        "foundation top under the punch and the punch's "
+                        "flat face and fillet); each halves the cell size "
+                        "there.");
+      prm.declare_entry("Number of edge refinements",
+                        "3",
+                        Patterns::Integer(0, 12),
+                        "Further graded refinements toward the contact "
+                        "edge, the strip from the start of the fillet to "
+                        "half the fillet radius beyond it, where the "
+                        "pressure peaks.");
+      prm.declare_entry("Grading factor",
+                        "2.0",
+                        Patterns::Double(0.5),
+                        "A cell is refined if its centre lies closer to the "
+                        "target than this many cell diameters. "
+                        "Dimensionless.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      element_degree        = prm.get_integer("Element degree");
+      n_global_refinements  = prm.get_integer("Number of global refinements");
+      n_contact_refinements = prm.get_integer("Number of contact refinements");
+      n_edge_refinements    = prm.get_integer("Number of edge refinements");
+      grading_factor        = prm.get_double("Grading factor");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    {
+      prm.declare_entry("Pressure",
+                        "100",
+                        Patterns::Double(0.),
+                        "Uniform pressure on the top face of the punch. "
+                        "Units: MPa.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    {
+      pressure = prm.get_double("Pressure");
+    }
+    prm.leave_subsection();
+    AssertThrow(pressure > 0.,
+                ExcMessage("Loading: 'Pressure' must be positive."));
+  }
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+    LoadingParameters::declare_parameters(prm);
+    Common::Materials::LinearElasticParameters::declare_parameters(
+      prm,
+      "Punch material");
+    Common::Materials::LinearElasticParameters::declare_parameters(
+      prm,
+      "Foundation material");
+    Common::Contact::ContactParameters::declare_parameters(prm);
+    Common::Solvers::NonlinearSolverParameters::declare_parameters(prm);
+    Common::Solvers::LinearSolverParameters::declare_parameters(prm);
+    Common::Solvers::LoadSteppingParameters::declare_parameters(prm);
+    Common::IO::OutputParameters::declare_parameters(prm);
+    Common::IO::RunControlParameters::declare_parameters(prm);
+  }
+
+
+
+  Parameters::Parameters(const std::string &filename)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input(filename);
+
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    loading.parse_parameters(prm);
+    punch_material.parse_parameters(prm, "Punch material");
+    foundation_material.parse_parameters(prm, "Foundation material");
+    contact.parse_parameters(prm);
+    nonlinear_solver.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+    load_stepping.parse_parameters(prm);
+    output.parse_parameters(prm);
+    run_control.parse_parameters(prm);
+
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::ShortPRM);
+    used_parameters = text.str();
+  }
+} // namespace Punch3d

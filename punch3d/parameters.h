@@ -1,0 +1,105 @@
+/*
+ * Parameters of the punch3d benchmark: the common blocks (materials,
+ * contact, solvers, output, run control) composed with the blocks that only
+ * this benchmark has (geometry, mesh, loading).
+ */
+#ifndef punch3d_parameters_h
+#define punch3d_parameters_h
+
+#include <common/contact/contact_parameters.h>
+#include <common/io/output_parameters.h>
+#include <common/io/run_control.h>
+#include <common/materials/linear_elastic.h>
+#include <common/solvers/linear_solver.h>
+#include <common/solvers/load_stepping.h>
+#include <common/solvers/newton_solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace Punch3d
+{
+  using namespace dealii;
+
+  /** Subsection "Geometry". */
+  struct GeometryParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Punch radius (mm). */
+    double punch_radius;
+    /** Punch height (mm). */
+    double punch_height;
+    /** Radius of the fillet at the punch's contact edge (mm). */
+    double fillet_radius;
+    /** Foundation radius (mm). */
+    double foundation_radius;
+    /** Foundation height (mm). */
+    double foundation_height;
+  };
+
+  /** Subsection "Mesh". */
+  struct MeshParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    unsigned int element_degree;
+    unsigned int n_global_refinements;
+    /** Graded refinements toward the contact strip. */
+    unsigned int n_contact_refinements;
+    /** Further graded refinements toward the contact edge. */
+    unsigned int n_edge_refinements;
+    /** Refine a cell if its centre is closer to the target than this many
+     * cell diameters. */
+    double grading_factor;
+  };
+
+  /** Subsection "Loading". */
+  struct LoadingParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Uniform pressure on the top of the punch (MPa). */
+    double pressure;
+  };
+
+  /**
+   * All parameters of a punch3d run, read from one .prm file.
+   */
+  struct Parameters
+  {
+    /** Declare, parse and check every entry of @p filename. */
+    explicit Parameters(const std::string &filename);
+
+    /** Declare every entry (also used by --print-parameters). */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    GeometryParameters                         geometry;
+    MeshParameters                             mesh;
+    LoadingParameters                          loading;
+    Common::Materials::LinearElasticParameters punch_material;
+    Common::Materials::LinearElasticParameters foundation_material;
+    Common::Contact::ContactParameters         contact;
+    Common::Solvers::NonlinearSolverParameters nonlinear_solver;
+    Common::Solvers::LinearSolverParameters    linear_solver;
+    Common::Solvers::LoadSteppingParameters    load_stepping;
+    Common::IO::OutputParameters               output;
+    Common::IO::RunControlParameters           run_control;
+
+    /** The parameters as read, for used_parameters.prm. */
+    std::string used_parameters;
+  };
+} // namespace Punch3d
+
+#endif

@@ -1,0 +1,717 @@
+/*
+ * Benchmark 2 of the FENET/NAFEMS advanced contact benchmarks, axisymmetric
+ * model: a steel punch (diameter 100 mm, height 100 mm, 10 mm fillet at the
+ * contact edge) pressed onto an aluminium foundation (diameter 200 mm,
+ * height 200 mm) by 100 MPa on its top. The contact pressure is compared
+ * with the half-space solution of a rounded flat punch and with the
+ * MSC.Marc and Abaqus curves of the benchmark report; see README.md.
+ */
+#include "punch_problem.h"
+
+#include <common/geometry/two_body_meshes.h>
+#include <common/io/plotting.h>
+#include <common/io/solution_output.h>
+#include <common/io/timer.h>
+#include <common/physics/boundary_loads.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace Punch3d
+{
+  namespace
+  {
+    /** MSC.Marc's u_z of the foundation top on the axis (REFERENCES.md 2.2,
+     * mm), for mu = 0 and 0.1; NaN for other mu. */
+    double
+    marc_axis_displacement(const double mu)
+    {
+      if (mu == 0.)
+        return -0.1310;
+      if (std::abs(mu - 0.1) < 1e-12)
+        return -0.1288;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+  } // namespace
+
+
+
+  PunchProblem::PunchProblem(const Parameters &parameters)
+    : parameters(parameters)
+    , mpi_communicator(MPI_COMM_WORLD)
+    , console(parameters.output.verbosity, mpi_communicator)
+    , triangulation(mpi_communicator)
+    , fe(FE_Q<dim>(parameters.mesh.element_degree), dim)
+    , mapping(parameters.mesh.element_degree)
+    , dof_handler(triangulation)
+    , axis_dof(numbers::invalid_dof_index)
+  {}
+
+
+
+  // The meridian section (r, z): the foundation is [0, Rf] x [0, Hf]; the
+  // punch [0, a] x [Hf, Hf + Hp] with the corner at (a, Hf) rounded by a
+  // fillet of radius rho centred at (a - rho, Hf + rho). The punch's coarse
+  // mesh is built by hand: a strip along its flat face, two cells along
+  // the fillet, and two rows above; its fillet faces follow a spherical
+  // manifold and its interior a transfinite interpolation, so the arc is
+  // exact under refinement and represented by the element geometry of Q2.
+  void
+  PunchProblem::make_grid()
+  {
+    const double a   = parameters.geometry.punch_radius;
+    const double Hp  = parameters.geometry.punch_height;
+    const double rho = parameters.geometry.fillet_radius;
+    const double Rf  = parameters.geometry.foundation_radius;
+    const double Hf  = parameters.geometry.foundation_height;
+    const double b   = a - rho;
+    AssertThrow(b - 1.5 * rho > 0.,
+                ExcMessage("Geometry: 'Fillet radius' must be less than 0.4 "
+                           "times the punch radius."));
+    const Point<dim> centre(b, Hf + rho);
+
+    Triangulation<dim> foundation;
+    const double       coarse_size = 0.5 * a;
+    GridGenerator::subdivided_hyper_rectangle(
+      foundation,
+      {std::max(1u, static_cast<unsigned int>(std::round(Rf / coarse_size))),
+       std::max(1u, static_cast<unsigned int>(std::round(Hf / coarse_size)))},
+      Point<dim>(0., 0.),
+      Point<dim>(Rf, Hf));
+
+    const double                  s        = std::sqrt(0.5);
+    const double                  z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
+    const std::vector<Point<dim>> vertices = {
+      {0., Hf},                          // 0: axis, contact face
+      {b, Hf},                           // 1: start of the fillet
+      {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
+      {a, Hf + rho},                     // 3: end of the fillet
+      {0., Hf + 2. * rho},               // 4
+      {b - 1.5 * rho, Hf + 2. * rho},    // 5
+      {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
+      {a, Hf + 2.5 * rho},               // 7
+      {0., z_mid},                       // 8
+      {b - 1.5 * rho, z_mid},            // 9
+      {b - 0.25 * rho, z_mid},           // 10
+      {a, z_mid},                        // 11
+      {0., Hf + Hp},                     // 12
+      {b - 1.5 * rho, Hf + Hp},          // 13
+      {b - 0.25 * rho, Hf + Hp},         // 14
+      {a, Hf + Hp}};                     // 15
+    const std::vector<std::vector<unsigned int>> cell_vertices = {
+      {0, 1, 4, 5},
+      {1, 2, 5, 6},
+      {2, 3, 6, 7},
+      {4, 5, 8, 9},
+      {5, 6, 9, 10},
+      {6, 7, 10, 11},
+      {8, 9, 12, 13},
+      {9, 10, 13, 14},
+      {10, 11, 14, 15}};
+    std::vector<CellData<dim>> cells(cell_vertices.size());
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      for (unsigned int v = 0; v < 4; ++v)
+        cells[c].vertices[v] = cell_vertices[c][v];
+    Triangulation<dim> punch;
+    punch.create_triangulation(vertices, cells, SubCellData());
+
+    for (const auto &cell : foundation.active_cell_iterators())
+      cell->set_material_id(MaterialIds::foundation);
+    for (const auto &cell : punch.active_cell_iterators())
+      cell->set_material_id(MaterialIds::punch);
+    Common::Geometry::join_bodies<dim>({&foundation, &punch}, triangulation);
+
+    const double tolerance = 1e-8 * a;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const bool is_punch = cell->material_id() == MaterialIds::punch;
+        if (is_punch)
+          cell->set_all_manifold_ids(1);
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<dim> c = cell->face(f)->center();
+              if (!is_punch)
+                cell->face(f)->set_boundary_id(
+                  std::abs(c[1]) < tolerance ? BoundaryIds::foundation_bottom :
+                  std::abs(c[1] - Hf) < tolerance ?
+                                               BoundaryIds::foundation_top :
+                  std::abs(c[0]) < tolerance ? BoundaryIds::foundation_axis :
+                                               BoundaryIds::foundation_side);
+              else if (std::abs(c[0]) < tolerance)
+                cell->face(f)->set_boundary_id(BoundaryIds::punch_axis);
+              else if (std::abs(c[1] - Hf - Hp) < tolerance)
+                cell->face(f)->set_boundary_id(BoundaryIds::punch_top);
+              else if (std::abs(c[0] - a) < tolerance)
+                cell->face(f)->set_boundary_id(BoundaryIds::punch_side);
+              else
+                {
+                  // The flat face and the fillet: the primary surface.
+                  cell->face(f)->set_boundary_id(BoundaryIds::punch_contact);
+                  if (c[0] > b + tolerance)
+                    cell->face(f)->set_manifold_id(0);
+                }
+            }
+      }
+    triangulation.set_manifold(0, SphericalManifold<dim>(centre));
+    TransfiniteInterpolationManifold<dim> transfinite;
+    transfinite.initialize(triangulation);
+    triangulation.set_manifold(1, transfinite);
+
+    triangulation.refine_global(parameters.mesh.n_global_refinements);
+    // Graded toward the strip under the punch, then toward the contact
+    // edge, from the start of the fillet to half its radius beyond it.
+    const auto strip = [Hf](const double r0, const double r1) {
+      return [Hf, r0, r1](const Point<dim> &p) {
+        const double dr = std::max({0., r0 - p[0], p[0] - r1});
+        return std::sqrt(dr * dr + (p[1] - Hf) * (p[1] - Hf));
+      };
+    };
+    Common::Geometry::refine_toward<dim>(triangulation,
+                                         strip(0., a),
+                                         parameters.mesh.n_contact_refinements,
+                                         parameters.mesh.grading_factor);
+    Common::Geometry::refine_toward<dim>(triangulation,
+                                         strip(b, b + 0.5 * rho),
+                                         parameters.mesh.n_edge_refinements,
+                                         parameters.mesh.grading_factor);
+  }
+
+
+
+  void
+  PunchProblem::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    // Hanging nodes of the graded mesh, and homogeneous Dirichlet
+    // conditions on the Newton increment: fixed foundation bottom, u_r = 0
+    // on the axis of both bodies.
+    constraints_dirichlet_and_hanging_nodes.clear();
+    constraints_dirichlet_and_hanging_nodes.reinit(
+      complete_index_set(dof_handler.n_dofs()));
+    DoFTools::make_hanging_node_constraints(
+      dof_handler,
+      constraints_dirichlet_and_hanging_nodes);
+    const FEValuesExtractors::Scalar r_displacement(0);
+    VectorTools::interpolate_boundary_values(
+      mapping,
+      dof_handler,
+      BoundaryIds::foundation_bottom,
+      Functions::ZeroFunction<dim>(dim),
+      constraints_dirichlet_and_hanging_nodes);
+    for (const auto id :
+         {BoundaryIds::foundation_axis, BoundaryIds::punch_axis})
+      VectorTools::interpolate_boundary_values(
+        mapping,
+        dof_handler,
+        id,
+        Functions::ZeroFunction<dim>(dim),
+        constraints_dirichlet_and_hanging_nodes,
+        fe.component_mask(r_displacement));
+    constraints_dirichlet_and_hanging_nodes.close();
+
+    // The axial DoF of the foundation's top vertex on the axis.
+    const Point<dim> axis_point(0., parameters.geometry.foundation_height);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->material_id() == MaterialIds::foundation)
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).distance(axis_point) <
+              1e-8 * parameters.geometry.punch_radius)
+            axis_dof = cell->vertex_dof_index(v, 1);
+    AssertThrow(axis_dof != numbers::invalid_dof_index,
+                ExcMessage("No foundation vertex on the axis at the top."));
+
+    std::map<types::material_id, Common::Materials::LinearElastic<dim>>
+      materials;
+    materials.emplace(MaterialIds::punch,
+                      Common::Materials::LinearElastic<dim>(
+                        parameters.punch_material));
+    materials.emplace(MaterialIds::foundation,
+                      Common::Materials::LinearElastic<dim>(
+                        parameters.foundation_material));
+    physics = std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+      mapping,
+      fe,
+      materials,
+      Common::Physics::Kinematics::axisymmetric);
+
+    contact_problem =
+      std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
+        dof_handler,
+        mapping,
+        *physics,
+        parameters.contact,
+        parameters.linear_solver,
+        parameters.nonlinear_solver,
+        parameters.foundation_material.youngs_modulus,
+        mpi_communicator);
+    contact_problem->setup(constraints_dirichlet_and_hanging_nodes);
+  }
+
+
+
+  // The uniform pressure on the punch's top face, over the full ring.
+  Common::Problems::ExternalLoad
+  PunchProblem::external_load() const
+  {
+    const double                   pressure = parameters.loading.pressure;
+    const double                   a        = parameters.geometry.punch_radius;
+    Common::Problems::ExternalLoad load;
+    load.add = [this, pressure](const double                     load_factor,
+                                const AffineConstraints<double> &c,
+                                TrilinosWrappers::MPI::Vector   &vector) {
+      Common::Physics::add_boundary_pressure(
+        mapping,
+        dof_handler,
+        BoundaryIds::punch_top,
+        load_factor * pressure,
+        Common::Physics::Kinematics::axisymmetric,
+        c,
+        vector);
+    };
+    load.magnitude = [pressure, a](const double load_factor) {
+      return load_factor * pressure * numbers::PI * a * a;
+    };
+    return load;
+  }
+
+
+
+  Common::Analytic::RoundedPunchHalfSpace
+  PunchProblem::half_space_reference() const
+  {
+    const double a = parameters.geometry.punch_radius;
+    return Common::Analytic::RoundedPunchHalfSpace(
+      parameters.punch_material.youngs_modulus,
+      parameters.punch_material.poisson_ratio,
+      parameters.foundation_material.youngs_modulus,
+      parameters.foundation_material.poisson_ratio,
+      a - parameters.geometry.fillet_radius,
+      parameters.geometry.fillet_radius,
+      parameters.loading.pressure * numbers::PI * a * a);
+  }
+
+
+
+  PunchProblem::Results
+  PunchProblem::evaluate_results(const double load_factor) const
+  {
+    const double a = parameters.geometry.punch_radius;
+    Results      r;
+    r.profile =
+      Common::Contact::contact_profile(contact_problem->coupling(),
+                                       contact_problem->enforcement(),
+                                       contact_problem->displacement(),
+                                       contact_problem->bulk_residual(),
+                                       0);
+    r.centre_pressure = r.peak_pressure = r.peak_radius = 0.;
+    r.centre_radius = r.contact_radius = r.stick_radius = 0.;
+    r.peak_tangential_traction                          = 0.;
+    if (!r.profile.empty())
+      {
+        // The Q2 vertex on the axis has no ring measure and is not paired:
+        // the innermost paired node stands for the centre.
+        const double r0   = r.profile.front().position[0];
+        r.centre_pressure = r.profile.front().pressure;
+        r.centre_radius   = r0;
+        for (const auto &p : r.profile)
+          {
+            if (p.pressure > r.peak_pressure)
+              {
+                r.peak_pressure = p.pressure;
+                r.peak_radius   = p.position[0];
+              }
+            r.peak_tangential_traction =
+              std::max(r.peak_tangential_traction,
+                       std::abs(p.tangential_traction));
+          }
+        r.contact_radius = r0 + Common::Contact::contact_extent(r.profile, 0);
+        if (contact_problem->enforcement().has_friction())
+          r.stick_radius = r0 + Common::Contact::stick_extent(r.profile, 0);
+      }
+    r.contact_force =
+      -Common::Contact::total_contact_force(contact_problem->coupling(),
+                                            contact_problem->enforcement())[1];
+    r.applied_force =
+      load_factor * parameters.loading.pressure * numbers::PI * a * a;
+    const auto  &u = contact_problem->displacement();
+    const double local =
+      dof_handler.locally_owned_dofs().is_element(axis_dof) ? u(axis_dof) : 0.;
+    r.axis_displacement = Utilities::MPI::sum(local, mpi_communicator);
+    return r;
+  }
+
+
+
+  void
+  PunchProblem::postprocess_step(
+    const unsigned int                       step,
+    const double                             load_factor,
+    const Common::Solvers::NewtonStatistics &statistics)
+  {
+    const Results r = evaluate_results(load_factor);
+    console.stream() << "Load step " << step << " of "
+                     << std::max(step, parameters.load_stepping.n_steps)
+                     << ", load factor "
+                     << Common::IO::Console::format(load_factor)
+                     << ": Newton iterations " << statistics.n_iterations
+                     << ", active contact nodes "
+                     << contact_problem->enforcement().n_active() << std::endl;
+    console.print_quantity("Contact force",
+                           "N",
+                           r.contact_force,
+                           "F/F_applied",
+                           r.contact_force / r.applied_force);
+    console.print_quantity("Contact radius", "mm", r.contact_radius);
+    console.print_quantity("Peak pressure", "MPa", r.peak_pressure);
+    console.print_quantity("  at radius", "mm", r.peak_radius);
+    if (contact_problem->enforcement().has_friction())
+      console.print_quantity("Stick radius", "mm", r.stick_radius);
+    console.print_quantity("Foundation top on the axis, u_z",
+                           "mm",
+                           r.axis_displacement);
+    if (contact_problem->enforcement().touches_search_edge())
+      console.stream() << "  Warning: the contact zone reaches the edge of "
+                          "the search region; increase 'Search distance'."
+                       << std::endl;
+  }
+
+
+
+  void
+  PunchProblem::output_results(
+    const Common::Solvers::LoadSteppingStatistics &stepping)
+  {
+    using Common::IO::JsonObject;
+    const auto &enforcement = contact_problem->enforcement();
+    const auto &out         = parameters.output;
+    const bool  root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const Results r  = evaluate_results(1.);
+    const auto    half_space   = half_space_reference();
+    const auto    fe_reference = Common::Analytic::fenet_punch_fe_reference();
+    const double  mu           = parameters.contact.friction_coefficient;
+    const bool    friction     = enforcement.has_friction();
+    const double  uz_marc      = marc_axis_displacement(mu);
+    // The MSC.Marc pressure nearest the axis, r = 0.5 mm (mu = 0.1; the
+    // frictionless curve is not tabulated, and FE centre pressures differ
+    // by less than their spread).
+    const double p_centre_marc = fe_reference.front().pressure_marc;
+    const double force_error =
+      std::abs(r.contact_force - r.applied_force) / r.applied_force;
+
+    console.stream() << "Results at full load" << std::endl;
+    console.print_quantity("Relative force balance error", "", force_error);
+    console.print_quantity("Pressure at the centre",
+                           "MPa",
+                           r.centre_pressure,
+                           "p/p_MARC",
+                           r.centre_pressure / p_centre_marc);
+    console.print_quantity("Contact radius",
+                           "mm",
+                           r.contact_radius,
+                           "a/a_halfspace",
+                           r.contact_radius / half_space.contact_radius());
+    if (std::isfinite(uz_marc))
+      console.print_quantity("Foundation top on the axis, u_z",
+                             "mm",
+                             r.axis_displacement,
+                             "uz/uz_MARC",
+                             r.axis_displacement / uz_marc);
+    if (friction)
+      console.print_quantity("Peak tangential traction",
+                             "MPa",
+                             r.peak_tangential_traction);
+
+    if (root)
+      {
+        Common::Contact::write_profile_csv(out.path("contact_profile.csv"),
+                                           r.profile,
+                                           0);
+        std::ofstream reference(out.path("reference_profile.csv"));
+        reference << "r,half_space_pressure\n" << std::setprecision(8);
+        const double a_ref = half_space.contact_radius();
+        for (unsigned int i = 0; i <= 600; ++i)
+          {
+            const double x = 1.25 * a_ref * i / 600.;
+            reference << x << ',' << half_space.pressure(x) << '\n';
+          }
+        std::ofstream curves(out.path("fe_reference.csv"));
+        curves << "r,pressure_marc,pressure_abaqus,tangential_traction_marc,"
+                  "tangential_traction_abaqus\n";
+        for (const auto &p : fe_reference)
+          curves << p.r << ',' << p.pressure_marc << ',' << p.pressure_abaqus
+                 << ',' << p.traction_marc << ',' << p.traction_abaqus << '\n';
+      }
+
+    if (out.write_plots && root)
+      {
+        const std::string fe_label =
+          "FE, Q" + std::to_string(parameters.mesh.element_degree) +
+          " axisymmetric";
+        const std::string  fe_style = "linespoints pt 7 ps 0.5";
+        std::ostringstream mu_stream;
+        mu_stream << mu;
+        const std::string x_label =
+          "r, distance from the axis (reference configuration) [mm]";
+        const std::string x_range =
+          "[0:" + std::to_string(1.25 * half_space.contact_radius()) + "]";
+        std::vector<std::pair<std::string, Common::IO::PlotDescription>> plots;
+
+        Common::IO::PlotDescription pressure;
+        pressure.title =
+          "Contact pressure, rounded punch (benchmark 2), mu = " +
+          mu_stream.str();
+        pressure.x_label = x_label;
+        pressure.y_label = "contact pressure [MPa]";
+        pressure.x_range = x_range;
+        pressure.series  = {
+           {"reference_profile.csv", 1, 2, "half-space", "lines lw 2"},
+           {"fe_reference.csv",
+            1,
+            2,
+            "MSC.Marc (mu = 0.1)",
+            "points pt 6 ps 1.5"},
+           {"fe_reference.csv", 1, 3, "Abaqus (mu = 0.1)", "points pt 4 ps 1.5"},
+           {"contact_profile.csv", 1, 2, fe_label, fe_style}};
+        plots.emplace_back("contact_pressure", pressure);
+
+        Common::IO::PlotDescription traction;
+        traction.title =
+          "Tangential traction on the foundation, mu = " + mu_stream.str();
+        traction.x_label = x_label;
+        traction.y_label = "tangential traction (+r) [MPa]";
+        traction.x_range = x_range;
+        traction.series  = {
+           {"fe_reference.csv",
+            1,
+            4,
+            "MSC.Marc (mu = 0.1)",
+            "points pt 6 ps 1.5"},
+           {"fe_reference.csv", 1, 5, "Abaqus (mu = 0.1)", "points pt 4 ps 1.5"},
+           {"contact_profile.csv", 1, 3, fe_label, fe_style}};
+        plots.emplace_back("tangential_traction", traction);
+
+        Common::IO::PlotDescription slip;
+        slip.title   = "Slip accumulated in contact, mu = " + mu_stream.str();
+        slip.x_label = x_label;
+        slip.y_label = "slip, punch relative to foundation, along +r [mm]";
+        slip.x_range = x_range;
+        slip.series  = {{"contact_profile.csv", 1, 4, fe_label, fe_style}};
+        plots.emplace_back("slip", slip);
+
+        for (const auto &[name, plot] : plots)
+          if (!Common::IO::write_plot(out.directory, name, plot))
+            {
+              console.stream() << "  Note: gnuplot not available; plot "
+                                  "scripts written without PNG."
+                               << std::endl;
+              break;
+            }
+      }
+
+    // summary.json
+    JsonObject case_description;
+    case_description.set("model", "axisymmetric")
+      .set("element_degree", parameters.mesh.element_degree)
+      .set("global_refinements", parameters.mesh.n_global_refinements)
+      .set("contact_refinements", parameters.mesh.n_contact_refinements)
+      .set("edge_refinements", parameters.mesh.n_edge_refinements)
+      .set("enforcement",
+           parameters.contact.enforcement ==
+               Common::Contact::Enforcement::penalty ?
+             "penalty" :
+             "lagrange multiplier")
+      .set("friction_law", friction ? "coulomb" : "frictionless")
+      .set("friction_coefficient", mu)
+      .set("n_load_steps", parameters.load_stepping.n_steps)
+      .set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(mpi_communicator));
+
+    const double Hf               = parameters.geometry.foundation_height;
+    const double a                = parameters.geometry.punch_radius;
+    const auto   contact_distance = [Hf, a](const Point<dim> &p) {
+      return std::abs(p[1] - Hf) + std::max(0., p[0] - a);
+    };
+    JsonObject mesh;
+    mesh.set("n_active_cells", triangulation.n_active_cells())
+      .set("n_dofs", dof_handler.n_dofs())
+      .set("smallest_cell_in_contact_zone_mm",
+           Common::Geometry::smallest_cell_near<dim>(triangulation,
+                                                     contact_distance));
+
+    unsigned int total_iterations = 0, max_iterations = 0;
+    for (const auto n : stepping.newton_iterations)
+      {
+        total_iterations += n;
+        max_iterations = std::max(max_iterations, n);
+      }
+    JsonObject newton;
+    newton.set("total_iterations", total_iterations)
+      .set("max_iterations_per_step", max_iterations)
+      .set("iterations_per_step", stepping.newton_iterations)
+      .set("n_cutbacks", stepping.n_cutbacks);
+
+    JsonObject results;
+    results.set("pressure_at_centre_MPa", r.centre_pressure)
+      .set("centre_node_radius_mm", r.centre_radius)
+      .set("peak_pressure_MPa", r.peak_pressure)
+      .set("peak_pressure_radius_mm", r.peak_radius)
+      .set("contact_radius_mm", r.contact_radius)
+      .set("foundation_top_axis_uz_mm", r.axis_displacement)
+      .set("contact_force_N", r.contact_force)
+      .set("applied_force_N", r.applied_force)
+      .set("force_balance_relative_error", force_error)
+      .set("peak_tangential_traction_MPa", r.peak_tangential_traction)
+      .set("n_active_nodes", enforcement.n_active());
+    if (friction)
+      results.set("stick_radius_mm", r.stick_radius);
+
+    JsonObject reference;
+    reference
+      .set("source",
+           "half-space solution of a rounded flat punch (REFERENCES.md 2.1); "
+           "MSC.Marc/Abaqus curves of NAFEMS R0094 (REFERENCES.md 2.2)")
+      .set("half_space_contact_radius_mm", half_space.contact_radius())
+      .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.))
+      .set("marc_pressure_at_centre_MPa", p_centre_marc);
+    if (std::isfinite(uz_marc))
+      reference.set("marc_foundation_top_axis_uz_mm", uz_marc);
+
+    JsonObject ratios;
+    ratios.set("pressure_at_centre_marc", r.centre_pressure / p_centre_marc)
+      .set("contact_radius_half_space",
+           r.contact_radius / half_space.contact_radius());
+    if (std::isfinite(uz_marc))
+      ratios.set("foundation_top_axis_uz_marc", r.axis_displacement / uz_marc);
+
+    JsonObject summary;
+    summary.set("benchmark", "punch3d")
+      .set("case", case_description)
+      .set("mesh", mesh)
+      .set("newton", newton)
+      .set("results", results)
+      .set("reference", reference)
+      .set("ratios", ratios)
+      .set("timing_s", timings);
+    if (root)
+      summary.write(out.path("summary.json"));
+  }
+
+
+
+  void
+  PunchProblem::run()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    console.stream() << "punch3d: rounded punch on a cylindrical foundation "
+                        "(axisymmetric)"
+                     << std::endl;
+    make_grid();
+    setup_system();
+    unsigned int n_paired    = 0;
+    const auto  &coupling    = contact_problem->coupling();
+    const auto  &enforcement = contact_problem->enforcement();
+    for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+      n_paired += coupling.row(j).has_partner;
+    console.stream() << "Mesh: " << triangulation.n_active_cells()
+                     << " active cells, " << dof_handler.n_dofs()
+                     << " degrees of freedom, Q"
+                     << parameters.mesh.element_degree << std::endl
+                     << "Contact: " << coupling.n_rows() << " secondary nodes, "
+                     << n_paired << " paired, " << enforcement.n_active()
+                     << " initially closed" << std::endl;
+    timings.set("setup_s", Common::IO::seconds_since(start));
+    if (parameters.run_control.dry_run)
+      {
+        console.stream() << "Dry run: parameters, mesh and contact pairing "
+                            "are valid."
+                         << std::endl;
+        return;
+      }
+
+    const auto &out = parameters.output;
+    out.prepare_directory({"summary.json",
+                           "contact_profile.csv",
+                           "reference_profile.csv",
+                           "fe_reference.csv",
+                           "contact_pressure.png",
+                           "contact_pressure.gp",
+                           "tangential_traction.png",
+                           "tangential_traction.gp",
+                           "slip.png",
+                           "slip.gp",
+                           "solution.pvd",
+                           "used_parameters.prm"},
+                          mpi_communicator);
+    if (console.is_root())
+      {
+        std::ofstream used(out.path("used_parameters.prm"));
+        used << parameters.used_parameters;
+      }
+
+    Common::IO::SolutionOutput<dim>                 solution_output(out,
+                                                    "solution",
+                                                    mpi_communicator);
+    const Common::Physics::StressPostprocessor<dim> stress(*physics);
+
+    const Common::Problems::ExternalLoad load = external_load();
+    Common::Solvers::LoadStepCallbacks   callbacks;
+    callbacks.solve = [&](const double load_factor) {
+      return contact_problem->solve(load_factor,
+                                    load,
+                                    console.stream(
+                                      Common::IO::Verbosity::verbose));
+    };
+    callbacks.accept = [&](const unsigned int                       step,
+                           const double                             load,
+                           const Common::Solvers::NewtonStatistics &stats) {
+      contact_problem->commit();
+      postprocess_step(step, load, stats);
+      if (out.write_graphical_output)
+        {
+          std::vector<Common::IO::NodalScalarField> contact_fields;
+          for (auto &[name, values] :
+               Common::Contact::contact_nodal_fields(coupling, enforcement))
+            contact_fields.push_back({name, std::move(values)});
+          solution_output.write(dof_handler,
+                                mapping,
+                                contact_problem->displacement(),
+                                {&stress},
+                                contact_fields,
+                                load,
+                                step);
+        }
+    };
+    callbacks.reject = [&]() {
+      contact_problem->restore();
+    };
+
+    const auto solve_start = std::chrono::steady_clock::now();
+    const auto stepping =
+      Common::Solvers::run_load_stepping(parameters.load_stepping,
+                                         callbacks,
+                                         console);
+    const auto &times = contact_problem->times();
+    timings.set("contact_setup_s", times.contact_setup)
+      .set("contact_solve_s", times.contact_setup + times.newton)
+      .set("load_stepping_s", Common::IO::seconds_since(solve_start))
+      .set("assembly_s", times.assembly)
+      .set("linear_solve_s", times.linear_solve)
+      .set("residual_s", times.residual)
+      .set("active_set_update_s", times.active_set_update)
+      .set("total_s", Common::IO::seconds_since(start));
+    output_results(stepping);
+  }
+} // namespace Punch3d

@@ -1,0 +1,125 @@
+/*
+ * Benchmark 2 of the FENET/NAFEMS advanced contact benchmarks, axisymmetric
+ * model: a steel punch with a rounded edge pressed onto an aluminium
+ * cylindrical foundation by a uniform pressure on its top.
+ */
+#ifndef punch3d_punch_problem_h
+#define punch3d_punch_problem_h
+
+#include <common/analytic/rounded_punch.h>
+#include <common/contact/contact_postprocessor.h>
+#include <common/io/console.h>
+#include <common/io/json_writer.h>
+#include <common/physics/small_strain_elasticity.h>
+#include <common/problems/small_strain_contact_problem.h>
+#include <common/solvers/load_stepping.h>
+
+#include "parameters.h"
+
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <memory>
+#include <vector>
+
+namespace Punch3d
+{
+  using namespace dealii;
+
+  /** Boundary ids of the two bodies (see README.md). */
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id foundation_bottom = 1;
+    constexpr types::boundary_id foundation_top    = 2;
+    constexpr types::boundary_id foundation_axis   = 3;
+    constexpr types::boundary_id foundation_side   = 4;
+    constexpr types::boundary_id punch_contact     = 5;
+    constexpr types::boundary_id punch_top         = 6;
+    constexpr types::boundary_id punch_axis        = 7;
+    constexpr types::boundary_id punch_side        = 8;
+  } // namespace BoundaryIds
+
+  /** Material ids: one per body. */
+  namespace MaterialIds
+  {
+    constexpr types::material_id punch      = 1;
+    constexpr types::material_id foundation = 2;
+  } // namespace MaterialIds
+
+  /**
+   * Axisymmetric model (r, z) of the rounded punch on the foundation, small
+   * strain, mortar contact with optional Coulomb friction.
+   */
+  class PunchProblem
+  {
+  public:
+    static constexpr int dim = 2;
+
+    explicit PunchProblem(const Parameters &parameters);
+
+    /** Build, solve all load steps and write the results. */
+    void
+    run();
+
+  private:
+    void
+    make_grid();
+    void
+    setup_system();
+    Common::Problems::ExternalLoad
+    external_load() const;
+    /** Half-space solution for the full load. */
+    Common::Analytic::RoundedPunchHalfSpace
+    half_space_reference() const;
+
+    /** Contact results at a load factor. */
+    struct Results
+    {
+      std::vector<Common::Contact::ContactPointResult<dim>> profile;
+      double centre_pressure;          // MPa, innermost paired node
+      double centre_radius;            // mm, its radius
+      double peak_pressure;            // MPa
+      double peak_radius;              // mm
+      double contact_radius;           // mm
+      double stick_radius;             // mm
+      double peak_tangential_traction; // MPa, largest |t|
+      double contact_force;            // N, compressive positive
+      double applied_force;            // N
+      double axis_displacement;        // mm, u_z of the foundation top, r = 0
+    };
+    Results
+    evaluate_results(const double load_factor) const;
+    void
+    postprocess_step(const unsigned int                       step,
+                     const double                             load_factor,
+                     const Common::Solvers::NewtonStatistics &statistics);
+    void
+    output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
+
+    // Run set-up
+    const Parameters   &parameters;
+    MPI_Comm            mpi_communicator;
+    Common::IO::Console console;
+
+    // Discretisation
+    parallel::shared::Triangulation<dim>                         triangulation;
+    const FESystem<dim>                                          fe;
+    const MappingQ<dim>                                          mapping;
+    DoFHandler<dim>                                              dof_handler;
+    types::global_dof_index                                      axis_dof;
+    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
+
+    // Contact problem and its state
+    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
+    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
+      contact_problem;
+
+    // Results
+    Common::IO::JsonObject timings;
+  };
+} // namespace Punch3d
+
+#endif
