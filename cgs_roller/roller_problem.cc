@@ -10,8 +10,8 @@
 #include <common/contact/contact_postprocessor.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
-#include <common/io/solution_output.h>
 #include <common/io/timer.h>
+#include <common/problems/load_steps.h>
 #include <common/solvers/linear_solver.h>
 
 #include <deal.II/base/function.h>
@@ -643,18 +643,7 @@ namespace CgsRoller
                      << std::endl;
     make_grid();
     setup_system();
-    unsigned int n_paired    = 0;
-    const auto  &coupling    = contact_problem->coupling();
-    const auto  &enforcement = contact_problem->enforcement();
-    for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-      n_paired += coupling.row(j).has_partner;
-    console.stream() << "Mesh: " << triangulation.n_active_cells()
-                     << " active cells, " << dof_handler.n_dofs()
-                     << " degrees of freedom, Q"
-                     << parameters.mesh.element_degree << std::endl
-                     << "Contact: " << coupling.n_rows() << " secondary nodes, "
-                     << n_paired << " paired, " << enforcement.n_active()
-                     << " initially closed" << std::endl;
+    Common::Problems::print_setup<dim>(console, dof_handler, *contact_problem);
     timings.set("setup_s", Common::IO::seconds_since(start));
     if (parameters.run_control.dry_run)
       {
@@ -684,57 +673,24 @@ namespace CgsRoller
         used << parameters.used_parameters;
       }
 
-    Common::IO::SolutionOutput<dim>                 solution_output(out,
-                                                    "solution",
-                                                    mpi_communicator);
-    const Common::Physics::StressPostprocessor<dim> stress(*physics);
-
     const Common::Problems::ExternalLoad load = external_load();
-    Common::Solvers::LoadStepCallbacks   callbacks;
-    callbacks.solve = [&](const double load_factor) {
-      return contact_problem->solve(load_factor,
-                                    load,
-                                    console.stream(
-                                      Common::IO::Verbosity::verbose));
-    };
-    callbacks.accept = [&](const unsigned int                       step,
-                           const double                             load,
-                           const Common::Solvers::NewtonStatistics &stats) {
-      contact_problem->commit();
-      postprocess_step(step, load, stats);
-      if (out.write_graphical_output)
-        {
-          std::vector<Common::IO::NodalScalarField> contact_fields;
-          for (auto &[name, values] :
-               Common::Contact::contact_nodal_fields(coupling, enforcement))
-            contact_fields.push_back({name, std::move(values)});
-          solution_output.write(dof_handler,
-                                mapping,
-                                contact_problem->displacement(),
-                                {&stress},
-                                contact_fields,
-                                load,
-                                step);
-        }
-    };
-    callbacks.reject = [&]() {
-      contact_problem->restore();
-    };
-
-    const auto solve_start = std::chrono::steady_clock::now();
-    const auto stepping =
-      Common::Solvers::run_load_stepping(parameters.load_stepping,
-                                         callbacks,
-                                         console);
+    const auto stepping = Common::Problems::run_load_steps<dim>(
+      *contact_problem,
+      load,
+      parameters.load_stepping,
+      out,
+      *physics,
+      dof_handler,
+      mapping,
+      console,
+      [this](const unsigned int                       step,
+             const double                             load_factor,
+             const Common::Solvers::NewtonStatistics &statistics) {
+        postprocess_step(step, load_factor, statistics);
+      },
+      timings);
     const auto  &times              = contact_problem->times();
     const double contact_solve_time = times.contact_setup + times.newton;
-    timings.set("contact_setup_s", times.contact_setup)
-      .set("contact_solve_s", contact_solve_time)
-      .set("load_stepping_s", Common::IO::seconds_since(solve_start))
-      .set("assembly_s", times.assembly)
-      .set("linear_solve_s", times.linear_solve)
-      .set("residual_s", times.residual)
-      .set("active_set_update_s", times.active_set_update);
 
     if (parameters.run_control.measure_contact_cost)
       {
