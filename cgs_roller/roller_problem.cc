@@ -518,14 +518,10 @@ namespace CgsRoller
                               "points pt 6 ps 1.5"});
         plots.emplace_back("slip", slip);
 
-        for (const auto &[name, plot] : plots)
-          if (!Common::IO::write_plot(out.directory, name, plot))
-            {
-              console.stream() << "  Note: gnuplot not available; plot "
-                                  "scripts written without PNG."
-                               << std::endl;
-              break;
-            }
+        if (!Common::IO::write_plots(out.directory, plots))
+          console.stream() << "  Note: gnuplot not available; plot scripts "
+                              "written without PNG."
+                           << std::endl;
       }
 
     // summary.json: the headline numbers with their references and the
@@ -559,17 +555,7 @@ namespace CgsRoller
            Common::Geometry::smallest_cell_near<dim>(triangulation,
                                                      contact_distance));
 
-    unsigned int total_iterations = 0, max_iterations = 0;
-    for (const auto n : stepping.newton_iterations)
-      {
-        total_iterations += n;
-        max_iterations = std::max(max_iterations, n);
-      }
-    JsonObject newton;
-    newton.set("total_iterations", total_iterations)
-      .set("max_iterations_per_step", max_iterations)
-      .set("iterations_per_step", stepping.newton_iterations)
-      .set("n_cutbacks", stepping.n_cutbacks);
+    const JsonObject newton = Common::Problems::newton_summary(stepping);
 
     JsonObject results;
     results.set("peak_pressure_MPa", peak)

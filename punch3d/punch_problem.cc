@@ -512,14 +512,10 @@ namespace Punch3d
         slip.series  = {{"contact_profile.csv", 1, 4, fe_label, fe_style}};
         plots.emplace_back("slip", slip);
 
-        for (const auto &[name, plot] : plots)
-          if (!Common::IO::write_plot(out.directory, name, plot))
-            {
-              console.stream() << "  Note: gnuplot not available; plot "
-                                  "scripts written without PNG."
-                               << std::endl;
-              break;
-            }
+        if (!Common::IO::write_plots(out.directory, plots))
+          console.stream() << "  Note: gnuplot not available; plot scripts "
+                              "written without PNG."
+                           << std::endl;
       }
 
     // summary.json
@@ -551,17 +547,7 @@ namespace Punch3d
            Common::Geometry::smallest_cell_near<dim>(triangulation,
                                                      contact_distance));
 
-    unsigned int total_iterations = 0, max_iterations = 0;
-    for (const auto n : stepping.newton_iterations)
-      {
-        total_iterations += n;
-        max_iterations = std::max(max_iterations, n);
-      }
-    JsonObject newton;
-    newton.set("total_iterations", total_iterations)
-      .set("max_iterations_per_step", max_iterations)
-      .set("iterations_per_step", stepping.newton_iterations)
-      .set("n_cutbacks", stepping.n_cutbacks);
+    const JsonObject newton = Common::Problems::newton_summary(stepping);
 
     JsonObject results;
     results.set("pressure_at_centre_MPa", r.centre_pressure)

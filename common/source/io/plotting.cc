@@ -55,5 +55,17 @@ namespace Common
                                   name + ".gp' >/dev/null 2>&1";
       return std::system(command.c_str()) == 0;
     }
+
+
+    bool
+    write_plots(
+      const std::string                                          &directory,
+      const std::vector<std::pair<std::string, PlotDescription>> &plots)
+    {
+      bool complete = true;
+      for (const auto &[name, plot] : plots)
+        complete = write_plot(directory, name, plot) && complete;
+      return complete;
+    }
   } // namespace IO
 } // namespace Common

@@ -3,6 +3,7 @@
 #include <common/io/timer.h>
 #include <common/problems/load_steps.h>
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 #include <vector>
@@ -12,6 +13,25 @@ namespace Common
   namespace Problems
   {
     using namespace dealii;
+
+    IO::JsonObject
+    newton_summary(const Solvers::LoadSteppingStatistics &stepping)
+    {
+      unsigned int total_iterations = 0, max_iterations = 0;
+      for (const auto n : stepping.newton_iterations)
+        {
+          total_iterations += n;
+          max_iterations = std::max(max_iterations, n);
+        }
+      IO::JsonObject newton;
+      newton.set("total_iterations", total_iterations)
+        .set("max_iterations_per_step", max_iterations)
+        .set("iterations_per_step", stepping.newton_iterations)
+        .set("n_cutbacks", stepping.n_cutbacks);
+      return newton;
+    }
+
+
 
     template <int dim>
     void

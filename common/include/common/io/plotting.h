@@ -7,6 +7,7 @@
 #define common_io_plotting_h
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace Common
@@ -58,6 +59,15 @@ namespace Common
     /** @brief True if a gnuplot executable is found on the PATH. */
     bool
     gnuplot_available();
+
+    /**
+     * @brief Write each named plot with write_plot() into @p directory.
+     * @return False if gnuplot is missing (scripts written, no PNG).
+     */
+    bool
+    write_plots(
+      const std::string                                          &directory,
+      const std::vector<std::pair<std::string, PlotDescription>> &plots);
   } // namespace IO
 } // namespace Common
 

@@ -36,6 +36,13 @@ namespace Common
                 const dealii::DoFHandler<dim>        &dof_handler,
                 const SmallStrainContactProblem<dim> &problem);
 
+    /**
+     * @brief The Newton record of a run for summary.json: total_iterations,
+     * max_iterations_per_step, iterations_per_step, n_cutbacks.
+     */
+    IO::JsonObject
+    newton_summary(const Solvers::LoadSteppingStatistics &stepping);
+
     /** Called after a load step is accepted and committed: step number,
      * load factor, Newton statistics. */
     using StepReport =
