@@ -21,8 +21,9 @@ namespace Punch3d
                         "10",
                         Patterns::Double(0.),
                         "Radius of the rounded edge between the punch's "
-                        "flat face and its side; less than the punch radius "
-                        "and a third of the punch height. Units: mm.");
+                        "flat face and its side; less than 0.4 times the "
+                        "punch radius and a third of the punch height. "
+                        "Units: mm.");
       prm.declare_entry("Foundation radius",
                         "100",
                         Patterns::Double(0.),
@@ -53,11 +54,11 @@ namespace Punch3d
     AssertThrow(punch_radius > 0. && punch_height > 0. &&
                   foundation_height > 0.,
                 ExcMessage("Geometry: radii and heights must be positive."));
-    AssertThrow(fillet_radius > 0. && fillet_radius < punch_radius &&
+    AssertThrow(fillet_radius > 0. && fillet_radius < 0.4 * punch_radius &&
                   3. * fillet_radius < punch_height,
-                ExcMessage("Geometry: 'Fillet radius' must be positive, less "
-                           "than the punch radius and a third of its "
-                           "height."));
+                ExcMessage("Geometry: 'Fillet radius' must be positive and "
+                           "less than 0.4 times the punch radius and a third "
+                           "of its height."));
     AssertThrow(foundation_radius > punch_radius,
                 ExcMessage("Geometry: 'Foundation radius' must exceed the "
                            "punch radius."));

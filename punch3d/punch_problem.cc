@@ -71,15 +71,12 @@ namespace Punch3d
   void
   PunchProblem::make_grid()
   {
-    const double a   = parameters.geometry.punch_radius;
-    const double Hp  = parameters.geometry.punch_height;
-    const double rho = parameters.geometry.fillet_radius;
-    const double Rf  = parameters.geometry.foundation_radius;
-    const double Hf  = parameters.geometry.foundation_height;
-    const double b   = a - rho;
-    AssertThrow(b - 1.5 * rho > 0.,
-                ExcMessage("Geometry: 'Fillet radius' must be less than 0.4 "
-                           "times the punch radius."));
+    const double     a   = parameters.geometry.punch_radius;
+    const double     Hp  = parameters.geometry.punch_height;
+    const double     rho = parameters.geometry.fillet_radius;
+    const double     Rf  = parameters.geometry.foundation_radius;
+    const double     Hf  = parameters.geometry.foundation_height;
+    const double     b   = a - rho;
     const Point<dim> centre(b, Hf + rho);
 
     Triangulation<dim> foundation;
