@@ -409,7 +409,13 @@ namespace CgsRoller
       has_slip_table ? spence_slip_table[5].second :
                        std::numeric_limits<double>::quiet_NaN();
 
-    if (std::isfinite(slip_reference))
+    // Ratios need a non-zero reference: with equal materials (beta = 0)
+    // the reference slip and tangential traction vanish.
+    const bool has_slip_ratio =
+      std::isfinite(slip_reference) && slip_reference != 0.;
+    const double q_reference = spence.peak_tangential_traction();
+    const bool   has_q_ratio = q_reference > 0.;
+    if (has_slip_ratio)
       console.print_quantity("Slip at x = a/2",
                              "mm",
                              r.slip_at_half_contact,
@@ -424,12 +430,16 @@ namespace CgsRoller
                                  0.,
                                "Spence",
                                spence.stick_ratio());
-        console.print_quantity("Peak tangential traction",
-                               "MPa",
-                               r.peak_tangential_traction,
-                               "q/q_Spence",
-                               r.peak_tangential_traction /
-                                 spence.peak_tangential_traction());
+        if (has_q_ratio)
+          console.print_quantity("Peak tangential traction",
+                                 "MPa",
+                                 r.peak_tangential_traction,
+                                 "q/q_Spence",
+                                 r.peak_tangential_traction / q_reference);
+        else
+          console.print_quantity("Peak tangential traction",
+                                 "MPa",
+                                 r.peak_tangential_traction);
       }
 
     if (root)
@@ -594,15 +604,15 @@ namespace CgsRoller
     JsonObject ratios;
     ratios.set("peak_pressure", peak / hertz.peak_pressure())
       .set("contact_half_width", half_width / hertz.half_width());
-    if (std::isfinite(slip_reference))
+    if (has_slip_ratio)
       ratios.set("slip_at_half_width", r.slip_at_half_contact / slip_reference);
+    if (friction && has_q_ratio)
+      ratios.set("peak_tangential_traction",
+                 r.peak_tangential_traction / q_reference);
     if (friction)
-      ratios
-        .set("peak_tangential_traction",
-             r.peak_tangential_traction / spence.peak_tangential_traction())
-        .set("stick_ratio_difference",
-             (half_width > 0. ? r.stick_half_width / half_width : 0.) -
-               spence.stick_ratio());
+      ratios.set("stick_ratio_difference",
+                 (half_width > 0. ? r.stick_half_width / half_width : 0.) -
+                   spence.stick_ratio());
 
     JsonObject summary;
     summary.set("benchmark", "cgs_roller")
