@@ -85,6 +85,7 @@ def write_plot(out_dir, rows, degrees):
                 "set output 'error_vs_time.png'\n"
                 "set datafile separator ','\n"
                 "set logscale xy\nset grid\nset key outside right top\n"
+                "set format y \"%g\"\n"
                 "set title \"Benchmark 2 (axisymmetric, mu = 0): error against wall time\"\n"
                 "set xlabel \"wall time of the run [s]\"\n"
                 "set ylabel \"relative error against the finest Q2 run\"\n"
