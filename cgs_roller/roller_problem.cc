@@ -7,6 +7,7 @@
  */
 #include "roller_problem.h"
 
+#include <common/analytic/coupled_partial_slip.h>
 #include <common/contact/contact_postprocessor.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
@@ -409,6 +410,25 @@ namespace CgsRoller
       has_slip_table ? spence_slip_table[5].second :
                        std::numeric_limits<double>::quiet_NaN();
 
+    // Spence's problem without the Goodman approximation, by boundary
+    // elements on half-spaces (100 elements, 20 increments: c/a to about
+    // 0.0125).
+    double coupled_stick_ratio = 0., coupled_peak_pressure = 0.;
+    if (friction)
+      {
+        const Common::Analytic::CoupledPartialSlip coupled(
+          hertz.contact_modulus(),
+          std::abs(hertz.dundurs_beta()),
+          mu,
+          parameters.geometry.roller_radius,
+          parameters.loading.force_per_thickness,
+          100,
+          20,
+          false);
+        coupled_stick_ratio   = coupled.stick_half_width() / a_ref;
+        coupled_peak_pressure = coupled.centre_pressure();
+      }
+
     // Ratios need a non-zero reference: with equal materials (beta = 0)
     // the reference slip and tangential traction vanish.
     const bool has_slip_ratio =
@@ -430,6 +450,14 @@ namespace CgsRoller
                                  0.,
                                "Spence",
                                spence.stick_ratio());
+        console.print_quantity("  exact-coupling half-space c/a",
+                               "",
+                               coupled_stick_ratio);
+        console.print_quantity("  exact-coupling half-space p0",
+                               "MPa",
+                               coupled_peak_pressure,
+                               "p0/p0_Hertz",
+                               coupled_peak_pressure / hertz.peak_pressure());
         if (has_q_ratio)
           console.print_quantity("Peak tangential traction",
                                  "MPa",
@@ -599,7 +627,12 @@ namespace CgsRoller
              "approximation)")
         .set("stick_ratio_c_over_a", spence.stick_ratio())
         .set("stick_half_width_mm", spence.stick_half_width())
-        .set("peak_tangential_traction_MPa", spence.peak_tangential_traction());
+        .set("peak_tangential_traction_MPa", spence.peak_tangential_traction())
+        .set("coupled_source",
+             "half-spaces without the Goodman approximation, boundary "
+             "elements (common/analytic/coupled_partial_slip)")
+        .set("coupled_stick_ratio_c_over_a", coupled_stick_ratio)
+        .set("coupled_peak_pressure_MPa", coupled_peak_pressure);
 
     JsonObject ratios;
     ratios.set("peak_pressure", peak / hertz.peak_pressure())

@@ -18,8 +18,11 @@ A run fails the sweep if it does not complete or has |c/a - Spence| >
 tolerance (default 0.05); load-step cutbacks are reported in the table. The script exits
 non-zero if any run fails.
 
-Writes friction_sweep.csv and stick_ratio_vs_mu.png (c/a against mu with
-the Spence curve) to the output directory.
+The table also gives c/a of the same half-space problem without the
+Goodman approximation (boundary elements, summary.json
+reference.coupled_stick_ratio_c_over_a), which the small-load runs should
+approach. Writes friction_sweep.csv and stick_ratio_vs_mu.png (c/a against
+mu with both half-space curves) to the output directory.
 
 Usage: scripts/friction_sweep.py [--build DIR] [--out DIR] [--quick]
            [--mu 0.05 0.1 0.2 0.3 0.5 1.0] [--loads full small]
@@ -98,6 +101,7 @@ def run_case(app, mu, load, level, steps, out_dir):
         "n_cutbacks": s["newton"]["n_cutbacks"],
         "c_over_a": s["results"]["stick_ratio_c_over_a"],
         "c_over_a_spence": s["reference"]["stick_ratio_c_over_a"],
+        "c_over_a_coupled": s["reference"]["coupled_stick_ratio_c_over_a"],
         "peak_q_over_spence": s["ratios"]["peak_tangential_traction"],
         "p0_over_hertz": s["ratios"]["peak_pressure"],
         "a_over_hertz": s["ratios"]["contact_half_width"],
@@ -110,16 +114,19 @@ def write_plot(out_dir, rows, loads):
     for load in loads:
         name = f"series_{load}.csv"
         with open(os.path.join(out_dir, name), "w") as f:
-            f.write("mu,c_over_a,c_over_a_spence\n")
+            f.write("mu,c_over_a,c_over_a_spence,c_over_a_coupled\n")
             for r in rows:
                 if r["load"] == load and r["completed"]:
-                    f.write(f"{r['mu']},{r['c_over_a']},{r['c_over_a_spence']}\n")
+                    f.write(f"{r['mu']},{r['c_over_a']},{r['c_over_a_spence']},"
+                            f"{r['c_over_a_coupled']}\n")
         label = ("FE, full load (a/R = 0.12)" if load == "full"
                  else "FE, 1/100 load (a/R = 0.012)")
         series.append(f"'{name}' using 1:2 with linespoints lw 2 pt 7 title \"{label}\"")
     first = f"series_{loads[0]}.csv"
     series.insert(0, f"'{first}' using 1:3 with linespoints lw 2 dt 2 pt 6 "
                      "title \"Spence, half-spaces (K'/K = beta/mu)\"")
+    series.insert(1, f"'{first}' using 1:4 with linespoints lw 2 dt 3 pt 4 "
+                     "title \"half-spaces, exact coupling (boundary elements)\"")
     script = os.path.join(out_dir, "stick_ratio_vs_mu.gp")
     with open(script, "w") as f:
         f.write("set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n"
@@ -164,7 +171,7 @@ def main():
 
     n_failed = 0
     print("load   mu     n_dofs  Newton max  cutbacks  c/a      Spence   diff     "
-          "q/q_Sp   p0/p0_H  wall[s]  verdict")
+          "coupled  q/q_Sp   p0/p0_H  wall[s]  verdict")
     for r in rows:
         if not r["completed"]:
             n_failed += 1
@@ -177,12 +184,14 @@ def main():
         n_failed += not ok
         print(f"{r['load']:6s} {r['mu']:<6g} {r['n_dofs']:6d} {r['max_newton_per_step']:10d} "
               f"{r['n_cutbacks']:9d}  {r['c_over_a']:.4f}   {r['c_over_a_spence']:.4f}   "
-              f"{diff:+.4f}  {r['peak_q_over_spence']:.4f}   {r['p0_over_hertz']:.4f}   "
+              f"{diff:+.4f}  {r['c_over_a_coupled']:.4f}   {r['peak_q_over_spence']:.4f}   "
+              f"{r['p0_over_hertz']:.4f}   "
               f"{r['wall_time_s']:7.2f}  {r['verdict']}")
 
     table = os.path.join(args.out, "friction_sweep.csv")
     fields = ["load", "mu", "completed", "n_dofs", "max_newton_per_step", "n_cutbacks",
-              "c_over_a", "c_over_a_spence", "difference", "peak_q_over_spence",
+              "c_over_a", "c_over_a_spence", "difference", "c_over_a_coupled",
+              "peak_q_over_spence",
               "p0_over_hertz", "a_over_hertz", "wall_time_s", "verdict", "error"]
     with open(table, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=fields)
