@@ -1,6 +1,5 @@
 #include "parameters.h"
 
-#include <sstream>
 
 namespace CgsRoller
 {
@@ -146,12 +145,7 @@ namespace CgsRoller
     Common::Materials::LinearElasticParameters::declare_parameters(
       prm,
       "Block material");
-    Common::Contact::ContactParameters::declare_parameters(prm);
-    Common::Solvers::NonlinearSolverParameters::declare_parameters(prm);
-    Common::Solvers::LinearSolverParameters::declare_parameters(prm);
-    Common::Solvers::LoadSteppingParameters::declare_parameters(prm);
-    Common::IO::OutputParameters::declare_parameters(prm);
-    Common::IO::RunControlParameters::declare_parameters(prm);
+    Common::Problems::ContactRunParameters::declare_parameters(prm);
   }
 
 
@@ -167,15 +161,6 @@ namespace CgsRoller
     loading.parse_parameters(prm);
     roller_material.parse_parameters(prm, "Roller material");
     block_material.parse_parameters(prm, "Block material");
-    contact.parse_parameters(prm);
-    nonlinear_solver.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
-    load_stepping.parse_parameters(prm);
-    output.parse_parameters(prm);
-    run_control.parse_parameters(prm);
-
-    std::ostringstream text;
-    prm.print_parameters(text, ParameterHandler::ShortPRM);
-    used_parameters = text.str();
+    Common::Problems::ContactRunParameters::parse_parameters(prm);
   }
 } // namespace CgsRoller

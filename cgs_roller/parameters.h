@@ -6,13 +6,8 @@
 #ifndef cgs_roller_parameters_h
 #define cgs_roller_parameters_h
 
-#include <common/contact/contact_parameters.h>
-#include <common/io/output_parameters.h>
-#include <common/io/run_control.h>
 #include <common/materials/linear_elastic.h>
-#include <common/solvers/linear_solver.h>
-#include <common/solvers/load_stepping.h>
-#include <common/solvers/newton_solver.h>
+#include <common/problems/contact_run_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -73,7 +68,7 @@ namespace CgsRoller
   /**
    * All parameters of a cgs_roller run, read from one .prm file.
    */
-  struct Parameters
+  struct Parameters : Common::Problems::ContactRunParameters
   {
     /** Declare, parse and check every entry of @p filename. */
     explicit Parameters(const std::string &filename);
@@ -87,15 +82,6 @@ namespace CgsRoller
     LoadingParameters                          loading;
     Common::Materials::LinearElasticParameters roller_material;
     Common::Materials::LinearElasticParameters block_material;
-    Common::Contact::ContactParameters         contact;
-    Common::Solvers::NonlinearSolverParameters nonlinear_solver;
-    Common::Solvers::LinearSolverParameters    linear_solver;
-    Common::Solvers::LoadSteppingParameters    load_stepping;
-    Common::IO::OutputParameters               output;
-    Common::IO::RunControlParameters           run_control;
-
-    /** The parameters as read, for used_parameters.prm. */
-    std::string used_parameters;
   };
 } // namespace CgsRoller
 

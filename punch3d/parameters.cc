@@ -1,6 +1,5 @@
 #include "parameters.h"
 
-#include <sstream>
 
 namespace Punch3d
 {
@@ -165,12 +164,7 @@ namespace Punch3d
     Common::Materials::LinearElasticParameters::declare_parameters(
       prm,
       "Foundation material");
-    Common::Contact::ContactParameters::declare_parameters(prm);
-    Common::Solvers::NonlinearSolverParameters::declare_parameters(prm);
-    Common::Solvers::LinearSolverParameters::declare_parameters(prm);
-    Common::Solvers::LoadSteppingParameters::declare_parameters(prm);
-    Common::IO::OutputParameters::declare_parameters(prm);
-    Common::IO::RunControlParameters::declare_parameters(prm);
+    Common::Problems::ContactRunParameters::declare_parameters(prm);
   }
 
 
@@ -186,15 +180,6 @@ namespace Punch3d
     loading.parse_parameters(prm);
     punch_material.parse_parameters(prm, "Punch material");
     foundation_material.parse_parameters(prm, "Foundation material");
-    contact.parse_parameters(prm);
-    nonlinear_solver.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
-    load_stepping.parse_parameters(prm);
-    output.parse_parameters(prm);
-    run_control.parse_parameters(prm);
-
-    std::ostringstream text;
-    prm.print_parameters(text, ParameterHandler::ShortPRM);
-    used_parameters = text.str();
+    Common::Problems::ContactRunParameters::parse_parameters(prm);
   }
 } // namespace Punch3d

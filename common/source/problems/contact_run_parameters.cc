@@ -1,0 +1,39 @@
+#include <common/problems/contact_run_parameters.h>
+
+#include <sstream>
+
+namespace Common
+{
+  namespace Problems
+  {
+    using namespace dealii;
+
+    void
+    ContactRunParameters::declare_parameters(ParameterHandler &prm)
+    {
+      Contact::ContactParameters::declare_parameters(prm);
+      Solvers::NonlinearSolverParameters::declare_parameters(prm);
+      Solvers::LinearSolverParameters::declare_parameters(prm);
+      Solvers::LoadSteppingParameters::declare_parameters(prm);
+      IO::OutputParameters::declare_parameters(prm);
+      IO::RunControlParameters::declare_parameters(prm);
+    }
+
+
+
+    void
+    ContactRunParameters::parse_parameters(ParameterHandler &prm)
+    {
+      contact.parse_parameters(prm);
+      nonlinear_solver.parse_parameters(prm);
+      linear_solver.parse_parameters(prm);
+      load_stepping.parse_parameters(prm);
+      output.parse_parameters(prm);
+      run_control.parse_parameters(prm);
+
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      used_parameters = text.str();
+    }
+  } // namespace Problems
+} // namespace Common
