@@ -27,7 +27,9 @@ namespace Common
       newton.set("total_iterations", total_iterations)
         .set("max_iterations_per_step", max_iterations)
         .set("iterations_per_step", stepping.newton_iterations)
-        .set("n_cutbacks", stepping.n_cutbacks);
+        .set("n_cutbacks", stepping.n_cutbacks)
+        .set("n_steps_converged_on_step_tolerance",
+             stepping.n_converged_on_step);
       return newton;
     }
 

@@ -128,7 +128,7 @@ namespace Common
     // per closed node (two for a sticking one); bulk tangent and residual;
     // external load; friction or penalty terms if selected.
     template <int dim>
-    void
+    double
     SmallStrainContactProblem<dim>::assemble_and_solve(const double load_factor,
                                                        const ExternalLoad &load)
     {
@@ -185,7 +185,11 @@ namespace Common
       constraints.distribute(newton_update);
       solve_times.linear_solve += IO::seconds_since(solve_start);
       solution_owned += newton_update;
-      solution = solution_owned;
+      solution                  = solution_owned;
+      const double update_norm  = newton_update.l2_norm();
+      const double current_norm = solution_owned.l2_norm();
+      return current_norm > 0. ? update_norm / current_norm :
+                                 (update_norm > 0. ? 1. : 0.);
     }
 
 
@@ -255,7 +259,7 @@ namespace Common
       contact_enforcement->begin_step();
       Solvers::NewtonCallbacks callbacks;
       callbacks.assemble_solve_and_update = [&]() {
-        assemble_and_solve(load_factor, load);
+        return assemble_and_solve(load_factor, load);
       };
       callbacks.evaluate_residual = [&]() {
         return evaluate_residual(load_factor, load);

@@ -68,6 +68,7 @@ namespace Common
               load = target;
               statistics.load_factors.push_back(load);
               statistics.newton_iterations.push_back(newton.n_iterations);
+              statistics.n_converged_on_step += newton.converged_on_step;
               callbacks.accept(step, load, newton);
               // Return to the nominal increment once a reduced one worked.
               increment = std::min(nominal, 2. * increment);

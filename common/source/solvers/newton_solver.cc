@@ -26,6 +26,16 @@ namespace Common
                           "Convergence tolerance on the equilibrium and "
                           "complementarity residuals, relative to the "
                           "external load. Dimensionless.");
+        prm.declare_entry(
+          "Step tolerance",
+          "1e-8",
+          Patterns::Double(0.),
+          "An iteration that leaves the active set unchanged and meets the "
+          "complementarity tolerance also converges when the Newton step is "
+          "smaller than this fraction of the solution (both Euclidean "
+          "norms): the equilibrium residual is then at its round-off level, "
+          "which exceeds 'Tolerance' when the bodies' stiffnesses differ by "
+          "orders of magnitude. 0 disables the test. Dimensionless.");
       }
       prm.leave_subsection();
     }
@@ -39,6 +49,7 @@ namespace Common
       {
         max_iterations = prm.get_integer("Maximum number of iterations");
         tolerance      = prm.get_double("Tolerance");
+        step_tolerance = prm.get_double("Step tolerance");
       }
       prm.leave_subsection();
     }
@@ -53,10 +64,11 @@ namespace Common
       NewtonStatistics statistics;
       for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
         {
-          callbacks.assemble_solve_and_update();
-          const NewtonResidual residual  = callbacks.evaluate_residual();
-          const unsigned int   n_changed = callbacks.update_active_set();
-          statistics.n_iterations        = it;
+          const double   increment     = callbacks.assemble_solve_and_update();
+          NewtonResidual residual      = callbacks.evaluate_residual();
+          residual.increment           = increment;
+          const unsigned int n_changed = callbacks.update_active_set();
+          statistics.n_iterations      = it;
           statistics.residuals.push_back(residual);
           statistics.active_set_changes.push_back(n_changed);
 
@@ -65,6 +77,7 @@ namespace Common
                   << IO::Console::format(residual.equilibrium)
                   << ", complementarity residual "
                   << IO::Console::format(residual.complementarity)
+                  << ", increment " << IO::Console::format(residual.increment)
                   << ", active set changes " << n_changed << std::endl;
 
           if (!std::isfinite(residual.equilibrium) ||
@@ -73,11 +86,24 @@ namespace Common
               statistics.failure = "non-finite residual";
               return statistics;
             }
-          if (n_changed == 0 && residual.equilibrium < parameters.tolerance &&
-              residual.complementarity < parameters.tolerance)
+          if (n_changed == 0 && residual.complementarity < parameters.tolerance)
             {
-              statistics.converged = true;
-              return statistics;
+              if (residual.equilibrium < parameters.tolerance)
+                {
+                  statistics.converged = true;
+                  return statistics;
+                }
+              // The first iteration's step carries the load increment and
+              // says nothing about round-off.
+              if (it > 1 && residual.increment < parameters.step_tolerance)
+                {
+                  verbose << "    Newton step below the step tolerance: the "
+                             "equilibrium residual is at round-off level"
+                          << std::endl;
+                  statistics.converged         = true;
+                  statistics.converged_on_step = true;
+                  return statistics;
+                }
             }
           if (callbacks.is_cycling())
             {

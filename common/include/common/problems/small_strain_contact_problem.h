@@ -161,7 +161,8 @@ namespace Common
       times() const;
 
     private:
-      void
+      /** One Newton iteration; returns the relative norm of the update. */
+      double
       assemble_and_solve(const double load_factor, const ExternalLoad &load);
 
       Solvers::NewtonResidual

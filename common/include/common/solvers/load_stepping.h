@@ -64,6 +64,9 @@ namespace Common
       std::vector<double>       load_factors;
       std::vector<unsigned int> newton_iterations;
       unsigned int              n_cutbacks = 0;
+      /** Accepted steps whose Newton iteration converged on the step test
+       * (equilibrium residual at round-off above its tolerance). */
+      unsigned int n_converged_on_step = 0;
     };
 
     /**

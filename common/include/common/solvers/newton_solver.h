@@ -1,8 +1,11 @@
 /**
  * @file newton_solver.h
  * Semismooth Newton loop that sees only callbacks: it knows no matrices,
- * meshes or contact. Convergence needs an unchanged active set and small
- * equilibrium and complementarity residuals.
+ * meshes or contact. Convergence needs an unchanged active set, a small
+ * complementarity residual and either a small equilibrium residual or a
+ * small Newton step (the relative step test of PETSc's SNES, which ends
+ * the iteration when round-off keeps the equilibrium residual above its
+ * tolerance, as it does for bodies of very different stiffness).
  */
 #ifndef common_solvers_newton_solver_h
 #define common_solvers_newton_solver_h
@@ -34,6 +37,8 @@ namespace Common
       unsigned int max_iterations;
       /** Tolerance on the residuals relative to the external load. */
       double tolerance;
+      /** Tolerance on the Newton step relative to the solution. */
+      double step_tolerance;
     };
 
     /**
@@ -43,6 +48,8 @@ namespace Common
     {
       double equilibrium     = 0.;
       double complementarity = 0.;
+      /** Norm of the Newton update relative to the norm of the solution. */
+      double increment = 0.;
     };
 
     /**
@@ -51,8 +58,9 @@ namespace Common
     struct NewtonCallbacks
     {
       /** Assemble the linearised system with the current active set, solve
-       * it and apply the increment. */
-      std::function<void()> assemble_solve_and_update;
+       * it and apply the increment; returns the norm of the increment
+       * relative to the norm of the updated solution. */
+      std::function<double()> assemble_solve_and_update;
       /** Residuals of the updated state (also updates the pressures). */
       std::function<NewtonResidual()> evaluate_residual;
       /** Apply the active-set rule; returns the number of changed points. */
@@ -66,8 +74,11 @@ namespace Common
      */
     struct NewtonStatistics
     {
-      unsigned int                n_iterations = 0;
-      bool                        converged    = false;
+      unsigned int n_iterations = 0;
+      bool         converged    = false;
+      /** Converged on the step test with the equilibrium residual above
+       * its tolerance (at round-off level). */
+      bool                        converged_on_step = false;
       std::string                 failure;
       std::vector<NewtonResidual> residuals;
       std::vector<unsigned int>   active_set_changes;

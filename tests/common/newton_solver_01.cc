@@ -1,0 +1,120 @@
+/*
+ * The semismooth Newton loop (common/solvers/newton_solver.h) on scripted
+ * residual histories: it converges on the residual tolerance; it converges
+ * on the step test when the equilibrium residual stalls above its tolerance
+ * at round-off while the step is negligible, and flags it; it never takes
+ * the first iteration's step (which carries the load increment) as a
+ * convergence sign; it does not converge on a small step while the active
+ * set changes or the complementarity residual is large, nor when the step
+ * stays above its tolerance or the test is disabled; it stops on a
+ * non-finite residual and on a cycling active set.
+ */
+
+#include <common/solvers/newton_solver.h>
+
+#include "../tests.h"
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+using namespace Common::Solvers;
+
+namespace
+{
+  /** One scripted iteration. */
+  struct Iteration
+  {
+    double       step;
+    double       equilibrium;
+    double       complementarity;
+    unsigned int n_changed;
+  };
+
+  /** Run the loop on a script; the last entry repeats when it runs out. */
+  NewtonStatistics
+  run(const std::vector<Iteration> &script,
+      const double                  step_tolerance,
+      const bool                    cycling = false)
+  {
+    NonlinearSolverParameters parameters;
+    parameters.max_iterations = 8;
+    parameters.tolerance      = 1e-10;
+    parameters.step_tolerance = step_tolerance;
+
+    unsigned int    k = 0;
+    NewtonCallbacks callbacks;
+    callbacks.assemble_solve_and_update = [&]() {
+      return script[std::min<std::size_t>(k, script.size() - 1)].step;
+    };
+    callbacks.evaluate_residual = [&]() {
+      const auto    &s = script[std::min<std::size_t>(k, script.size() - 1)];
+      NewtonResidual r;
+      r.equilibrium     = s.equilibrium;
+      r.complementarity = s.complementarity;
+      return r;
+    };
+    callbacks.update_active_set = [&]() {
+      return script[std::min<std::size_t>(k++, script.size() - 1)].n_changed;
+    };
+    callbacks.is_cycling = [&]() {
+      return cycling;
+    };
+
+    ConditionalOStream quiet(std::cout, false);
+    return solve_newton(parameters, callbacks, quiet);
+  }
+
+  void
+  report(const std::string &name, const NewtonStatistics &s)
+  {
+    deallog << name << ": converged " << s.converged << ", on the step test "
+            << s.converged_on_step << ", iterations " << s.n_iterations
+            << (s.failure.empty() ? "" : ", failure: " + s.failure)
+            << std::endl;
+  }
+} // namespace
+
+int
+main()
+{
+  initlog();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+
+  // Residual below tolerance at the third iteration: converges there.
+  report("residual test",
+         run({{1., 1e-3, 1e-1, 4}, {1e-2, 1e-7, 1e-3, 1}, {1e-5, 1e-13, 0, 0}},
+             1e-8));
+  // Round-off floor 7e-10 once the active set settles (the rigid-punch
+  // case): converges on the step test at iteration 3, flagged.
+  report("round-off floor",
+         run({{1., 1e-9, 1e-1, 10}, {5e-3, 7e-10, 0, 0}, {5e-10, 7e-10, 0, 0}},
+             1e-8));
+  // A tiny first step (a small load increment) is not convergence: the
+  // second one is.
+  report("tiny first step",
+         run({{1e-12, 7e-10, 0, 0}, {1e-13, 7e-10, 0, 0}}, 1e-8));
+  // Small steps while the active set still changes: no convergence.
+  report("active set changes",
+         run({{1., 1e-9, 1e-1, 3}, {1e-12, 7e-10, 1e-3, 2}}, 1e-8));
+  // Small steps with a large complementarity residual: no convergence.
+  report("complementarity open",
+         run({{1., 1e-9, 1e-1, 3}, {1e-12, 7e-10, 1e-3, 0}}, 1e-8));
+  // A stalled residual with steps above the step tolerance (a genuinely
+  // stuck iteration): no convergence.
+  report("stalled, steps large",
+         run({{1., 1e-3, 1e-1, 3}, {1e-6, 1e-6, 0, 0}}, 1e-8));
+  // The step test disabled: the round-off floor is not accepted.
+  report("step test disabled",
+         run({{1., 1e-9, 1e-1, 10}, {5e-3, 7e-10, 0, 0}, {5e-10, 7e-10, 0, 0}},
+             0.));
+  // A non-finite residual stops at once, even with a tiny step.
+  report("non-finite", run({{1., 1e-3, 1e-1, 3}, {1e-12, nan, 0, 0}}, 1e-8));
+  // A cycling active set stops the loop.
+  report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, true));
+}
