@@ -13,58 +13,23 @@ Usage: scripts/accuracy_time_study.py [--build DIR] [--out DIR] [--quick]
            [--enforcements lm penalty:1e5 penalty:1e6]
 """
 import argparse
-import csv
-import json
 import os
-import shutil
-import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from study_tools import (ROOT, contact_overrides, enforcement_label, enforcement_tag,
+                         loglog_plot, run_variant, write_table)
+
 PRODUCTION = os.path.join(ROOT, "parameters/cgs_roller/hertz_frictionless.prm")
 
 
-def enforcement_label(enforcement):
-    if enforcement == "lm":
-        return "Lagrange multipliers"
-    return "penalty %s MPa/mm" % enforcement.split(":")[1]
-
-
 def run_case(app, degree, level, enforcement, out_dir):
-    tag = enforcement.replace(":", "")
-    case_dir = os.path.join(out_dir, "runs", f"q{degree}_level{level}_{tag}")
-    os.makedirs(case_dir, exist_ok=True)
-    contact = ""
-    if enforcement != "lm":
-        contact = ("subsection Contact\n"
-                   "  set Enforcement = penalty\n"
-                   f"  set Penalty stiffness = {enforcement.split(':')[1]}\n"
-                   "end\n")
-    prm = os.path.join(case_dir, "case.prm")
-    with open(prm, "w") as f:
-        f.write(f"include {PRODUCTION}\n" + contact +
-                "subsection Mesh\n"
-                f"  set Element degree = {degree}\n"
-                f"  set Number of contact refinements = {level}\n"
-                "end\n"
-                "subsection Load stepping\n"
-                "  set Number of load steps = 1\n"
-                "end\n"
-                "subsection Output\n"
-                f"  set Output directory = {case_dir}\n"
-                "  set Write graphical output = false\n"
-                "  set Write plots = false\n"
-                "  set Verbosity = quiet\n"
-                "end\n"
-                "subsection Run control\n"
-                "  set Measure contact cost = true\n"
-                "end\n")
-    start = time.time()
-    subprocess.run([app, prm], check=True, stdout=subprocess.DEVNULL)
-    wall = time.time() - start
-    with open(os.path.join(case_dir, "summary.json")) as f:
-        s = json.load(f)
+    case_dir = os.path.join(out_dir, "runs", f"q{degree}_level{level}_{enforcement_tag(enforcement)}")
+    s, wall = run_variant(app, PRODUCTION, case_dir, {
+        "Contact": contact_overrides(enforcement),
+        "Mesh": {"Element degree": degree, "Number of contact refinements": level},
+        "Load stepping": {"Number of load steps": 1},
+        "Run control": {"Measure contact cost": "true"}})
     return {
         "degree": degree,
         "contact_refinements": level,
@@ -84,36 +49,26 @@ def run_case(app, degree, level, enforcement, out_dir):
 def write_plots(out_dir, rows, degrees, enforcements):
     """Log-log error against wall time, one curve per degree x enforcement."""
     styles = {"lm": "lw 2 pt 7", "penalty": "lw 1.5 dt 2 pt 6"}
-    for quantity, column, label in (
-            ("p0", "abs_error_p0", "relative error of the peak pressure p0"),
-            ("l2", "l2_error_pressure", "relative L2 error of the pressure")):
+    for quantity, col, label in (
+            ("p0", 2, "relative error of the peak pressure p0"),
+            ("l2", 3, "relative L2 error of the pressure")):
         series = []
         for d in degrees:
             for e in enforcements:
-                name = f"series_q{d}_{e.replace(':', '')}.csv"
+                name = f"series_q{d}_{enforcement_tag(e)}.csv"
                 with open(os.path.join(out_dir, name), "w") as f:
                     f.write("wall_time_s,abs_error_p0,l2_error_pressure\n")
                     for r in rows:
                         if r["degree"] == d and r["enforcement"] == e:
                             f.write(f"{r['wall_time_s']},{max(abs(r['error_p0']), 1e-6)},"
                                     f"{r['l2_error_pressure']}\n")
-                col = 2 if column == "abs_error_p0" else 3
                 style = styles["lm" if e == "lm" else "penalty"]
                 series.append(f"'{name}' every ::1 using 1:{col} with linespoints {style} "
                               f"title \"Q{d}, {enforcement_label(e)}\"")
-        script = os.path.join(out_dir, f"error_{quantity}_vs_time.gp")
-        with open(script, "w") as f:
-            f.write("set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n"
-                    f"set output 'error_{quantity}_vs_time.png'\n"
-                    "set datafile separator ','\n"
-                    "set logscale xy\nset grid\nset key outside right top\n"
-                    "set title \"Benchmark 1 (Hertz): accuracy against wall time\"\n"
-                    "set xlabel \"wall time of the run [s]\"\n"
-                    f"set ylabel \"{label}\"\n"
-                    "set arrow from graph 0, first 0.01 to graph 1, first 0.01 nohead dt 3\n"
-                    "plot " + ", \\\n     ".join(series) + "\n")
-        if shutil.which("gnuplot"):
-            subprocess.run(["gnuplot", os.path.basename(script)], cwd=out_dir, check=True)
+        loglog_plot(out_dir, f"error_{quantity}_vs_time",
+                    "Benchmark 1 (Hertz): accuracy against wall time",
+                    "wall time of the run [s]", label, series,
+                    "set arrow from graph 0, first 0.01 to graph 1, first 0.01 nohead dt 3\n")
 
 
 def main():
@@ -154,10 +109,7 @@ def main():
               f"{r['contact_cost_ratio']:6.2f}")
     os.makedirs(args.out, exist_ok=True)
     table = os.path.join(args.out, "accuracy_time.csv")
-    with open(table, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_table(table, rows)
     write_plots(args.out, rows, args.degrees, args.enforcements)
     print(f"table: {table}")
     print(f"plots: {args.out}/error_p0_vs_time.png, {args.out}/error_l2_vs_time.png")

@@ -1,61 +1,48 @@
 #!/usr/bin/env python3
 """Mesh study for benchmark 2 (punch3d, axisymmetric, frictionless).
 
-Runs parameters/punch3d/punch_axisym_mu0.prm for element degree Q1 and Q2
-and several refinement levels: level L sets 'Number of contact refinements'
+Runs parameters/punch3d/punch_axisym_mu0.prm for element degree Q1 and Q2,
+contact enforcement by Lagrange multipliers and by penalty at two
+stiffnesses, and several refinement levels: level L sets 'Number of contact refinements'
 = L and 'Number of edge refinements' = L - 2 (so the cells at the contact
 edge are 2^(2L-2) times smaller than the coarse 25 mm cells). For each run
 it records DoFs, wall time, the centre pressure, the peak pressure and its
 radius, the contact radius and the foundation's u_z on the axis, and the
-errors of the peak pressure and of u_z against the finest Q2 run (the
-self-convergence reference; the half-space and MSC.Marc values are printed
-beside them). Writes punch_mesh_study.csv and a log-log plot of those
+errors of the peak pressure and of u_z against the finest Q2 Lagrange-
+multiplier run (the self-convergence reference; the half-space and MSC.Marc values are printed
+beside them). Writes punch_mesh_study.csv and log-log plots of those
 errors against wall time.
 
 Usage: scripts/punch_mesh_study.py [--build DIR] [--out DIR] [--quick]
            [--levels 3 4 5 6] [--degrees 1 2]
+           [--enforcements lm penalty:1e5 penalty:1e6]
 """
 import argparse
-import csv
-import json
 import os
-import shutil
-import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from study_tools import (ROOT, contact_overrides, enforcement_label, enforcement_tag,
+                         loglog_plot, run_variant, write_table)
+
 PRODUCTION = os.path.join(ROOT, "parameters/punch3d/punch_axisym_mu0.prm")
 
 
-def run_case(app, degree, level, out_dir):
-    case_dir = os.path.join(out_dir, "runs", f"q{degree}_level{level}")
-    os.makedirs(case_dir, exist_ok=True)
-    prm = os.path.join(case_dir, "case.prm")
-    with open(prm, "w") as f:
-        f.write(f"include {PRODUCTION}\n"
-                "subsection Mesh\n"
-                f"  set Element degree = {degree}\n"
-                f"  set Number of contact refinements = {level}\n"
-                f"  set Number of edge refinements = {max(0, level - 2)}\n"
-                "end\n"
-                "subsection Output\n"
-                f"  set Output directory = {case_dir}\n"
-                "  set Write graphical output = false\n"
-                "  set Write plots = false\n"
-                "  set Verbosity = quiet\n"
-                "end\n")
-    start = time.time()
-    subprocess.run([app, prm], check=True, stdout=subprocess.DEVNULL)
-    wall = time.time() - start
-    with open(os.path.join(case_dir, "summary.json")) as f:
-        s = json.load(f)
+def run_case(app, degree, level, enforcement, out_dir):
+    case_dir = os.path.join(out_dir, "runs", f"q{degree}_level{level}_{enforcement_tag(enforcement)}")
+    s, wall = run_variant(app, PRODUCTION, case_dir, {
+        "Contact": contact_overrides(enforcement),
+        "Mesh": {"Element degree": degree,
+                 "Number of contact refinements": level,
+                 "Number of edge refinements": max(0, level - 2)}})
     r = s["results"]
     return {
         "degree": degree,
         "level": level,
+        "enforcement": enforcement,
         "n_dofs": s["mesh"]["n_dofs"],
         "h_contact_mm": s["mesh"]["smallest_cell_in_contact_zone_mm"],
+        "newton_iterations": s["newton"]["total_iterations"],
         "wall_time_s": round(wall, 3),
         "pressure_at_centre_MPa": r["pressure_at_centre_MPa"],
         "peak_pressure_MPa": r["peak_pressure_MPa"],
@@ -68,30 +55,35 @@ def run_case(app, degree, level, out_dir):
     }
 
 
-def write_plot(out_dir, rows, degrees):
-    series = []
+COLOURS = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"]
+
+
+def write_plots(out_dir, rows, degrees, enforcements):
+    """Two log-log plots (peak pressure, u_z): error against wall time, one
+    curve per degree x enforcement; colour = enforcement, solid = highest
+    degree."""
+    names = {}
     for d in degrees:
-        name = f"series_q{d}.csv"
-        with open(os.path.join(out_dir, name), "w") as f:
-            f.write("wall_time_s,error_peak,error_uz\n")
-            for r in rows:
-                if r["degree"] == d and r["error_peak"] > 0:
-                    f.write(f"{r['wall_time_s']},{r['error_peak']},{max(r['error_uz'], 1e-7)}\n")
-        series.append(f"'{name}' using 1:2 with linespoints lw 2 pt 7 title \"Q{d}, peak pressure\"")
-        series.append(f"'{name}' using 1:3 with linespoints lw 2 dt 2 pt 6 title \"Q{d}, u_z on the axis\"")
-    script = os.path.join(out_dir, "error_vs_time.gp")
-    with open(script, "w") as f:
-        f.write("set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n"
-                "set output 'error_vs_time.png'\n"
-                "set datafile separator ','\n"
-                "set logscale xy\nset grid\nset key outside right top\n"
-                "set format y \"%g\"\n"
-                "set title \"Benchmark 2 (axisymmetric, mu = 0): error against wall time\"\n"
-                "set xlabel \"wall time of the run [s]\"\n"
-                "set ylabel \"relative error against the finest Q2 run\"\n"
-                "plot " + ", \\\n     ".join(series) + "\n")
-    if shutil.which("gnuplot"):
-        subprocess.run(["gnuplot", os.path.basename(script)], cwd=out_dir, check=True)
+        for e in enforcements:
+            names[(d, e)] = f"series_q{d}_{enforcement_tag(e)}.csv"
+            with open(os.path.join(out_dir, names[(d, e)]), "w") as f:
+                f.write("wall_time_s,error_peak,error_uz\n")
+                for r in rows:
+                    if r["degree"] == d and r["enforcement"] == e and r["error_peak"] > 0:
+                        f.write(f"{r['wall_time_s']},{r['error_peak']},{max(r['error_uz'], 1e-7)}\n")
+    for stem, col, quantity in (("error_peak_vs_time", 2, "peak pressure"),
+                                ("error_uz_vs_time", 3, "u_z of the foundation top on the axis")):
+        series = []
+        for i, e in enumerate(enforcements):
+            for d in degrees:
+                style = "lw 2 pt 7" if d == max(degrees) else "lw 1.5 dt 2 pt 6"
+                series.append(f"'{names[(d, e)]}' using 1:{col} with linespoints {style} "
+                              f"lc rgb '{COLOURS[i % len(COLOURS)]}' "
+                              f"title \"Q{d}, {enforcement_label(e)}\"")
+        loglog_plot(out_dir, stem,
+                    f"Benchmark 2 (axisymmetric, mu = 0): {quantity}",
+                    "wall time of the run [s]",
+                    "relative error against the finest Q2 Lagrange-multiplier run", series)
 
 
 def main():
@@ -101,6 +93,7 @@ def main():
     parser.add_argument("--quick", action="store_true", help="levels 3 to 5 only")
     parser.add_argument("--levels", type=int, nargs="+", default=[3, 4, 5, 6, 7])
     parser.add_argument("--degrees", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--enforcements", nargs="+", default=["lm", "penalty:1e5", "penalty:1e6"])
     args = parser.parse_args()
     if args.quick:
         args.levels = [l for l in args.levels if l <= 5]
@@ -113,36 +106,42 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     start = time.time()
     rows = []
-    total = len(args.degrees) * len(args.levels)
+    total = len(args.degrees) * len(args.enforcements) * len(args.levels)
     for d in args.degrees:
-        for l in args.levels:
-            print(f"  [{time.time() - start:6.1f} s] run {len(rows) + 1} of {total}: Q{d}, level {l}",
-                  flush=True)
-            rows.append(run_case(app, d, l, args.out))
+        for e in args.enforcements:
+            for l in args.levels:
+                print(f"  [{time.time() - start:6.1f} s] run {len(rows) + 1} of {total}: "
+                      f"Q{d}, level {l}, {enforcement_label(e)}", flush=True)
+                rows.append(run_case(app, d, l, e, args.out))
 
-    finest = max((r for r in rows if r["degree"] == max(args.degrees)),
+    # The self-convergence reference: the finest run of the highest degree,
+    # with Lagrange multipliers if they were run (penalty solutions carry
+    # a penetration error that refinement does not remove).
+    reference_enforcement = "lm" if "lm" in args.enforcements else args.enforcements[0]
+    finest = max((r for r in rows if r["degree"] == max(args.degrees)
+                  and r["enforcement"] == reference_enforcement),
                  key=lambda r: r["level"])
     for r in rows:
         r["error_peak"] = abs(r["peak_pressure_MPa"] / finest["peak_pressure_MPa"] - 1.)
         r["error_uz"] = abs(r["foundation_top_axis_uz_mm"] / finest["foundation_top_axis_uz_mm"] - 1.)
 
-    print("degree level  n_dofs  h[mm]    wall[s]  p(0)[MPa]  peak[MPa]  at r[mm]  a[mm]    "
-          "u_z[mm]     err peak   err u_z")
+    print("degree level  enforcement            n_dofs  h[mm]   Newton  wall[s]  p(0)[MPa]  "
+          "peak[MPa]  at r[mm]  a[mm]    u_z[mm]     err peak   err u_z")
     for r in rows:
-        print(f"Q{r['degree']:<5d} {r['level']:5d} {r['n_dofs']:7d} {r['h_contact_mm']:7.4f} "
-              f"{r['wall_time_s']:8.2f}  {r['pressure_at_centre_MPa']:9.3f}  {r['peak_pressure_MPa']:9.2f}  "
-              f"{r['peak_pressure_radius_mm']:8.3f}  {r['contact_radius_mm']:7.3f}  "
-              f"{r['foundation_top_axis_uz_mm']:.6f}  {r['error_peak']:9.2e}  {r['error_uz']:9.2e}")
+        print(f"Q{r['degree']:<5d} {r['level']:5d}  {enforcement_label(r['enforcement']):22s} "
+              f"{r['n_dofs']:6d} {r['h_contact_mm']:7.4f} {r['newton_iterations']:6d} "
+              f"{r['wall_time_s']:8.2f}  {r['pressure_at_centre_MPa']:9.3f}  "
+              f"{r['peak_pressure_MPa']:9.2f}  {r['peak_pressure_radius_mm']:8.3f}  "
+              f"{r['contact_radius_mm']:7.3f}  {r['foundation_top_axis_uz_mm']:.6f}  "
+              f"{r['error_peak']:9.2e}  {r['error_uz']:9.2e}")
     print(f"references: half-space contact radius {finest['half_space_contact_radius_mm']:.3f} mm, "
-          f"MSC.Marc u_z {finest['marc_uz_mm']} mm; errors are against the finest Q2 run")
+          f"MSC.Marc u_z {finest['marc_uz_mm']} mm; errors are against the finest "
+          f"Q{finest['degree']} {enforcement_label(finest['enforcement'])} run")
     table = os.path.join(args.out, "punch_mesh_study.csv")
-    with open(table, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
-    write_plot(args.out, rows, args.degrees)
+    write_table(table, rows)
+    write_plots(args.out, rows, args.degrees, args.enforcements)
     print(f"table: {table}")
-    print(f"plot: {os.path.join(args.out, 'error_vs_time.png')}")
+    print(f"plots: {args.out}/error_peak_vs_time.png, {args.out}/error_uz_vs_time.png")
     print(f"study wall time: {time.time() - start:.1f} s")
 
 

@@ -1,0 +1,92 @@
+"""Helpers shared by the study scripts (accuracy against time, mesh studies).
+
+A study runs one application on variants of a production parameter file
+(the variant includes the production file and overrides a few entries),
+reads each run's summary.json, and writes a CSV table and log-log gnuplot
+plots of error against wall time.
+"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def enforcement_label(enforcement):
+    """'lm' or 'penalty:<stiffness>' as a legend label."""
+    if enforcement == "lm":
+        return "Lagrange multipliers"
+    return "penalty %s MPa/mm" % enforcement.split(":")[1]
+
+
+def enforcement_tag(enforcement):
+    """'lm' or 'penalty:<stiffness>' as part of a file name."""
+    return enforcement.replace(":", "")
+
+
+def run_variant(app, production, case_dir, overrides):
+    """Run app on production with the subsections in overrides.
+
+    overrides maps a subsection name to a dict of entries; the Output
+    subsection (directory case_dir, no graphical output, no plots, quiet)
+    is added. Returns (summary.json as a dict, wall time in seconds).
+    """
+    os.makedirs(case_dir, exist_ok=True)
+    sections = dict(overrides)
+    sections["Output"] = {"Output directory": case_dir,
+                          "Write graphical output": "false",
+                          "Write plots": "false",
+                          "Verbosity": "quiet"}
+    text = f"include {production}\n"
+    for name, entries in sections.items():
+        text += f"subsection {name}\n"
+        text += "".join(f"  set {k} = {v}\n" for k, v in entries.items())
+        text += "end\n"
+    prm = os.path.join(case_dir, "case.prm")
+    with open(prm, "w") as f:
+        f.write(text)
+    start = time.time()
+    subprocess.run([app, prm], check=True, stdout=subprocess.DEVNULL)
+    wall = time.time() - start
+    with open(os.path.join(case_dir, "summary.json")) as f:
+        return json.load(f), wall
+
+
+def contact_overrides(enforcement):
+    """The Contact subsection entries selecting an enforcement."""
+    if enforcement == "lm":
+        return {"Enforcement": "lagrange multiplier"}
+    return {"Enforcement": "penalty",
+            "Penalty stiffness": enforcement.split(":")[1]}
+
+
+def write_table(path, rows):
+    """Write rows (dicts with the same keys) as CSV."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def loglog_plot(out_dir, stem, title, xlabel, ylabel, series, extra=""):
+    """Write <stem>.gp and, if gnuplot exists, <stem>.png in out_dir.
+
+    series: gnuplot plot clauses ("'file.csv' using 1:2 with ... title ...");
+    extra: further gnuplot commands before the plot.
+    """
+    script = os.path.join(out_dir, f"{stem}.gp")
+    with open(script, "w") as f:
+        f.write("set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n"
+                f"set output '{stem}.png'\n"
+                "set datafile separator ','\n"
+                "set logscale xy\nset grid\nset key outside right top\n"
+                "set format y \"%g\"\n"
+                f"set title \"{title}\"\n"
+                f"set xlabel \"{xlabel}\"\n"
+                f"set ylabel \"{ylabel}\"\n" + extra +
+                "plot " + ", \\\n     ".join(series) + "\n")
+    if shutil.which("gnuplot"):
+        subprocess.run(["gnuplot", os.path.basename(script)], cwd=out_dir, check=True)
