@@ -34,11 +34,11 @@ namespace Common
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      unsigned int max_iterations;
+      unsigned int max_iterations = 25;
       /** Tolerance on the residuals relative to the external load. */
-      double tolerance;
+      double tolerance = 1e-10;
       /** Tolerance on the Newton step relative to the solution. */
-      double step_tolerance;
+      double step_tolerance = 1e-8;
     };
 
     /**
