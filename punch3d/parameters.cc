@@ -4,6 +4,39 @@
 namespace Punch3d
 {
   void
+  ModelParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model");
+    {
+      prm.declare_entry(
+        "Punch",
+        "elastic",
+        Patterns::Selection("elastic|rigid"),
+        "How the punch responds: 'elastic' (the benchmark: a linear "
+        "elastic body with the entries of 'Punch material'), or 'rigid': it "
+        "translates along the axis without deforming, and the pressure on "
+        "its top acts as their resultant. 'rigid' measures what the "
+        "punch's elasticity contributes; the half-space reference then "
+        "takes an infinite punch modulus.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ModelParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Model");
+    {
+      rigid_punch = (prm.get("Punch") == "rigid");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
   GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
@@ -155,6 +188,7 @@ namespace Punch3d
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
+    ModelParameters::declare_parameters(prm);
     GeometryParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
@@ -175,6 +209,7 @@ namespace Punch3d
     declare_parameters(prm);
     prm.parse_input(filename);
 
+    model.parse_parameters(prm);
     geometry.parse_parameters(prm);
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);

@@ -68,6 +68,18 @@ namespace Punch3d
     double pressure;
   };
 
+  /** Subsection "Model". */
+  struct ModelParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** The punch translates along the axis without deforming. */
+    bool rigid_punch;
+  };
+
   /**
    * All parameters of a punch3d run, read from one .prm file.
    */
@@ -80,6 +92,7 @@ namespace Punch3d
     static void
     declare_parameters(ParameterHandler &prm);
 
+    ModelParameters                            model;
     GeometryParameters                         geometry;
     MeshParameters                             mesh;
     LoadingParameters                          loading;

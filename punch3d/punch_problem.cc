@@ -12,6 +12,7 @@
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
 #include <common/physics/boundary_loads.h>
+#include <common/physics/rigid_body.h>
 #include <common/problems/load_steps.h>
 
 #include <deal.II/base/function.h>
@@ -218,6 +219,17 @@ namespace Punch3d
         Functions::ZeroFunction<dim>(dim),
         constraints_dirichlet_and_hanging_nodes,
         fe.component_mask(r_displacement));
+    // A rigid punch follows the axial DoF of its top vertex on the axis;
+    // u_r = 0 throughout.
+    if (parameters.model.rigid_punch)
+      Common::Physics::add_rigid_translation_constraints(
+        dof_handler,
+        MaterialIds::punch,
+        Point<dim>(0.,
+                   parameters.geometry.foundation_height +
+                     parameters.geometry.punch_height),
+        fe.component_mask(r_displacement),
+        constraints_dirichlet_and_hanging_nodes);
     constraints_dirichlet_and_hanging_nodes.close();
 
     // The axial DoF of the foundation's top vertex on the axis.
@@ -292,7 +304,8 @@ namespace Punch3d
   {
     const double a = parameters.geometry.punch_radius;
     return Common::Analytic::RoundedPunchHalfSpace(
-      parameters.punch_material.youngs_modulus,
+      parameters.model.rigid_punch ? std::numeric_limits<double>::infinity() :
+                                     parameters.punch_material.youngs_modulus,
       parameters.punch_material.poisson_ratio,
       parameters.foundation_material.youngs_modulus,
       parameters.foundation_material.poisson_ratio,
@@ -518,6 +531,7 @@ namespace Punch3d
     // summary.json
     JsonObject case_description;
     case_description.set("model", "axisymmetric")
+      .set("punch", parameters.model.rigid_punch ? "rigid" : "elastic")
       .set("element_degree", parameters.mesh.element_degree)
       .set("global_refinements", parameters.mesh.n_global_refinements)
       .set("contact_refinements", parameters.mesh.n_contact_refinements)
@@ -599,7 +613,8 @@ namespace Punch3d
   {
     const auto start = std::chrono::steady_clock::now();
     console.stream() << "punch3d: rounded punch on a cylindrical foundation "
-                        "(axisymmetric)"
+                        "(axisymmetric"
+                     << (parameters.model.rigid_punch ? ", rigid punch)" : ")")
                      << std::endl;
     make_grid();
     setup_system();

@@ -2,12 +2,13 @@
  * The semismooth Newton loop (common/solvers/newton_solver.h) on scripted
  * residual histories: it converges on the residual tolerance; it converges
  * on the step test when the equilibrium residual stalls above its tolerance
- * at round-off while the step is negligible, and flags it; it never takes
- * the first iteration's step (which carries the load increment) as a
- * convergence sign; it does not converge on a small step while the active
- * set changes or the complementarity residual is large, nor when the step
- * stays above its tolerance or the test is disabled; it stops on a
- * non-finite residual and on a cycling active set.
+ * at round-off while the step is negligible, and flags it, but fails when
+ * the residual stays far above round-off (bound 1e-6) as the step vanishes;
+ * it never takes the first iteration's step (which carries the load
+ * increment) as a convergence sign; it does not converge on a small step
+ * while the active set changes or the complementarity residual is large,
+ * nor when the step stays above its tolerance or the test is disabled; it
+ * stops on a non-finite residual and on a cycling active set.
  */
 
 #include <common/solvers/newton_solver.h>
@@ -109,6 +110,10 @@ main()
   // stuck iteration): no convergence.
   report("stalled, steps large",
          run({{1., 1e-3, 1e-1, 3}, {1e-6, 1e-6, 0, 0}}, 1e-8));
+  // A vanishing step with a residual far above round-off (residual and
+  // linearisation disagree): no convergence, a failure that says so.
+  report("residual inconsistent",
+         run({{1., 1e-3, 1e-1, 3}, {1e-12, 1e-3, 0, 0}}, 1e-8));
   // The step test disabled: the round-off floor is not accepted.
   report("step test disabled",
          run({{1., 1e-9, 1e-1, 10}, {5e-3, 7e-10, 0, 0}, {5e-10, 7e-10, 0, 0}},

@@ -551,8 +551,10 @@ namespace Common
 
     template <int dim>
     void
-    ContactEnforcement<dim>::add_contact_forces(const IndexSet &locally_owned,
-                                                VectorType     &residual) const
+    ContactEnforcement<dim>::add_contact_forces(
+      const AffineConstraints<double> &constraints,
+      const IndexSet                  &locally_owned,
+      VectorType                      &residual) const
     {
       std::vector<types::global_dof_index> dofs;
       Vector<double>                       B;
@@ -567,7 +569,7 @@ namespace Common
             continue;
           // B of d = -traction: D t on the secondary node, -M t on primary.
           gap_gradient(coupling, j, -traction, dofs, B);
-          residual.add(dofs, B);
+          constraints.distribute_local_to_global(B, dofs, residual);
         }
     }
 

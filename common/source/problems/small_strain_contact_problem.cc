@@ -234,7 +234,10 @@ namespace Common
         compute_bulk_residual(load_factor, load);
 
       contact_enforcement->update_pressures(solution, residual_vector);
-      contact_enforcement->add_contact_forces(locally_owned_dofs, r);
+      contact_enforcement->add_contact_forces(
+        constraints_dirichlet_and_hanging_nodes,
+        locally_owned_dofs,
+        r);
       r.compress(VectorOperation::add);
       constraints_dirichlet_and_hanging_nodes.set_zero(r);
 

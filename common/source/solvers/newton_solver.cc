@@ -36,6 +36,14 @@ namespace Common
           "norms): the equilibrium residual is then at its round-off level, "
           "which exceeds 'Tolerance' when the bodies' stiffnesses differ by "
           "orders of magnitude. 0 disables the test. Dimensionless.");
+        prm.declare_entry(
+          "Step test residual bound",
+          "1e-6",
+          Patterns::Double(0.),
+          "The step test accepts an equilibrium residual (relative to the "
+          "external load) up to this bound; above it a vanishing step means "
+          "that the residual and the linearisation disagree, and the "
+          "iteration fails. Dimensionless.");
       }
       prm.leave_subsection();
     }
@@ -50,6 +58,7 @@ namespace Common
         max_iterations = prm.get_integer("Maximum number of iterations");
         tolerance      = prm.get_double("Tolerance");
         step_tolerance = prm.get_double("Step tolerance");
+        step_test_residual_bound = prm.get_double("Step test residual bound");
       }
       prm.leave_subsection();
     }
@@ -97,6 +106,19 @@ namespace Common
               // says nothing about round-off.
               if (it > 1 && residual.increment < parameters.step_tolerance)
                 {
+                  // A vanishing step with a large residual means that the
+                  // residual and the linearisation disagree: no round-off
+                  // explains it, and the state is not accepted.
+                  if (residual.equilibrium >
+                      parameters.step_test_residual_bound)
+                    {
+                      statistics.failure =
+                        "the Newton step vanishes but the equilibrium "
+                        "residual stays at " +
+                        IO::Console::format(residual.equilibrium) +
+                        " (residual and linearisation disagree)";
+                      return statistics;
+                    }
                   verbose << "    Newton step below the step tolerance: the "
                              "equilibrium residual is at round-off level"
                           << std::endl;

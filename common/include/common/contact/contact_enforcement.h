@@ -209,11 +209,15 @@ namespace Common
        * \f$-\lambda_j n_j + t_j\f$ (pressure and tangential traction) to
        * @p residual (N): \f$D_j\f$ times the traction on secondary node j,
        * \f$-M_{jk}\f$ times it on primary node k, for the nodes whose
-       * first DoF is in @p locally_owned. Not compressed here.
+       * first DoF is in @p locally_owned, distributed through
+       * @p constraints (forces on constrained DoFs, such as hanging nodes
+       * or the nodes of a rigid body, move to the DoFs they depend on).
+       * Not compressed here.
        */
       void
-      add_contact_forces(const dealii::IndexSet &locally_owned,
-                         VectorType             &residual) const;
+      add_contact_forces(const dealii::AffineConstraints<double> &constraints,
+                         const dealii::IndexSet                  &locally_owned,
+                         VectorType &residual) const;
 
       /**
        * @brief Apply the active-set rule to every paired node: the normal

@@ -5,7 +5,8 @@
  * complementarity residual and either a small equilibrium residual or a
  * small Newton step (the relative step test of PETSc's SNES, which ends
  * the iteration when round-off keeps the equilibrium residual above its
- * tolerance, as it does for bodies of very different stiffness).
+ * tolerance, as it does for bodies of very different stiffness) with the
+ * residual below a bound that round-off cannot exceed.
  */
 #ifndef common_solvers_newton_solver_h
 #define common_solvers_newton_solver_h
@@ -39,6 +40,8 @@ namespace Common
       double tolerance = 1e-10;
       /** Tolerance on the Newton step relative to the solution. */
       double step_tolerance = 1e-8;
+      /** Largest relative equilibrium residual the step test accepts. */
+      double step_test_residual_bound = 1e-6;
     };
 
     /**

@@ -1,0 +1,59 @@
+/**
+ * @file rigid_body.h
+ * Rigid bodies in translation, by constraints: every DoF of a body follows
+ * one master DoF per component, so that the body keeps its shape while its
+ * neighbours deform. The body's cells stay in the mesh and in the
+ * assembly; a rigid translation strains nothing, so they add no internal
+ * force, and loads on the body sum up on the master DoFs. Rotations are not
+ * represented (the axisymmetric and symmetric benchmark tools need none).
+ */
+#ifndef common_physics_rigid_body_h
+#define common_physics_rigid_body_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <vector>
+
+namespace Common
+{
+  namespace Physics
+  {
+    /**
+     * @brief Constrain the body of material id @p body to a rigid
+     * translation.
+     *
+     * The master DoFs are those of the body's vertex nearest to
+     * @p reference_point (mm). For each displacement component c, every
+     * other DoF of component c on the body's cells is constrained to equal
+     * the master DoF of component c, or to zero if @p fixed_components
+     * selects c (a translation that symmetry forbids, e.g. u_r of a body on
+     * the axis of an axisymmetric model). DoFs that @p constraints already
+     * constrains keep their constraint: hanging nodes inside the body agree
+     * with a translation, and Dirichlet conditions meant for the whole
+     * body belong on the master DoFs. Every cell of the body must be
+     * known on this process (serial or parallel::shared triangulations),
+     * and @p constraints must store all lines (complete index set); close
+     * it afterwards.
+     *
+     * The finite element must be a vector-valued Lagrange element with
+     * one DoF per component at each vertex.
+     *
+     * @return The master DoF of each component (the entry of a fixed
+     * component is still the reference vertex's DoF, constrained to zero).
+     */
+    template <int dim>
+    std::vector<dealii::types::global_dof_index>
+    add_rigid_translation_constraints(
+      const dealii::DoFHandler<dim>     &dof_handler,
+      const dealii::types::material_id   body,
+      const dealii::Point<dim>          &reference_point,
+      const dealii::ComponentMask       &fixed_components,
+      dealii::AffineConstraints<double> &constraints);
+  } // namespace Physics
+} // namespace Common
+
+#endif
