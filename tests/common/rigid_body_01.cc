@@ -92,14 +92,14 @@ namespace
       deallog << "Newton failure: " << statistics.failure << std::endl;
     patch.contact_problem->commit();
 
-    const auto  &coupling     = patch.contact_problem->coupling();
-    const auto  &enforcement  = patch.contact_problem->enforcement();
-    const auto  &solution     = patch.contact_problem->displacement();
-    const double p            = setting.pressure;
-    const double E            = setting.E_lower;
-    const double nu           = setting.poisson_ratio;
-    const bool   axisymmetric = setting.kinematics ==
-                              Common::Physics::Kinematics::axisymmetric;
+    const auto  &coupling    = patch.contact_problem->coupling();
+    const auto  &enforcement = patch.contact_problem->enforcement();
+    const auto  &solution    = patch.contact_problem->displacement();
+    const double p           = setting.pressure;
+    const double E           = setting.E_lower;
+    const double nu          = setting.poisson_ratio;
+    const bool   axisymmetric =
+      setting.kinematics == Common::Physics::Kinematics::axisymmetric;
 
     // (a) Nodal pressures.
     double max_deviation = 0.;
@@ -107,8 +107,8 @@ namespace
       if (enforcement.is_active(j))
         max_deviation =
           std::max(max_deviation, std::abs(enforcement.pressure(j) - p) / p);
-    const bool pressures_exact = enforcement.n_active() > 0 &&
-                                 max_deviation < 1e-8;
+    const bool pressures_exact =
+      enforcement.n_active() > 0 && max_deviation < 1e-8;
     deallog << "Active secondary nodes: " << enforcement.n_active()
             << std::endl;
     deallog << "(a) nodal pressures: " << pass_fail(pressures_exact)
@@ -140,13 +140,11 @@ namespace
                   0.;
               if (cell->material_id() == MaterialIds::upper)
                 {
-                  max_rigid_strain =
-                    std::max({max_rigid_strain,
-                              strains[q].norm(),
-                              std::abs(hoop)});
+                  max_rigid_strain = std::max(
+                    {max_rigid_strain, strains[q].norm(), std::abs(hoop)});
                   continue;
                 }
-              const auto &law   = patch.physics->material(cell->material_id());
+              const auto &law = patch.physics->material(cell->material_id());
               SymmetricTensor<2, dim> sigma = law.stress(strains[q]);
               for (unsigned int d = 0; d < dim; ++d)
                 sigma[d][d] += law.lame_lambda() * hoop;
@@ -163,9 +161,8 @@ namespace
             << ", rigid block unstrained: " << pass_fail(rigid) << std::endl;
 
     // (c) The rigid block's translation.
-    const double translation =
-      -(axisymmetric ? 1. : 1. - nu * nu) * p / E * 1.;
-    double max_x = 0., max_y_error = 0.;
+    const double translation = -(axisymmetric ? 1. : 1. - nu * nu) * p / E * 1.;
+    double       max_x = 0., max_y_error = 0.;
     std::vector<types::global_dof_index> dof_indices(patch.fe.dofs_per_cell);
     for (const auto &cell : patch.dof_handler.active_cell_iterators())
       if (cell->material_id() == MaterialIds::upper)
@@ -184,9 +181,8 @@ namespace
         }
     const bool translation_exact =
       max_x < 1e-10 * std::abs(translation) && max_y_error < 1e-10;
-    deallog << "Rigid block u_y (master DoF): "
-            << format(solution(master[1])) << " mm, exact "
-            << format(translation) << " mm" << std::endl;
+    deallog << "Rigid block u_y (master DoF): " << format(solution(master[1]))
+            << " mm, exact " << format(translation) << " mm" << std::endl;
     deallog << "(c) rigid translation: " << pass_fail(translation_exact)
             << std::endl;
 
@@ -204,8 +200,7 @@ namespace
             << yes_no(statistics.converged && !statistics.converged_on_step)
             << std::endl;
     deallog << "(e) Newton convergence: "
-            << pass_fail(statistics.converged &&
-                         !statistics.converged_on_step)
+            << pass_fail(statistics.converged && !statistics.converged_on_step)
             << std::endl;
   }
 } // namespace
