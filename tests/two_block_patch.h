@@ -17,6 +17,7 @@
 #include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/newton_solver.h>
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
@@ -33,6 +34,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <cmath>
 #include <iomanip>
@@ -196,6 +198,36 @@ namespace TwoBlockPatch
       constraints.clear();
       constraints.reinit(complete_index_set(dof_handler.n_dofs()));
       DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    }
+
+    /** u_y = 0 on the bottom of the lower block. */
+    void
+    add_lower_support(AffineConstraints<double> &constraints) const
+    {
+      const FEValuesExtractors::Scalar y_displacement(1);
+      VectorTools::interpolate_boundary_values(
+        mapping,
+        dof_handler,
+        BoundaryIds::lower_bottom,
+        Functions::ZeroFunction<dim>(dim),
+        constraints,
+        fe.component_mask(y_displacement));
+    }
+
+    /** u_x = 0 on the symmetry lines (x = 0) of both blocks. */
+    void
+    add_symmetry(AffineConstraints<double> &constraints) const
+    {
+      const FEValuesExtractors::Scalar x_displacement(0);
+      for (const auto id :
+           {BoundaryIds::lower_symmetry, BoundaryIds::upper_symmetry})
+        VectorTools::interpolate_boundary_values(
+          mapping,
+          dof_handler,
+          id,
+          Functions::ZeroFunction<dim>(dim),
+          constraints,
+          fe.component_mask(x_displacement));
     }
 
     /**

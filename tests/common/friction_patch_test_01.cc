@@ -80,15 +80,8 @@ namespace
   {
     AffineConstraints<double> constraints;
     patch.make_grid_and_dofs(constraints);
-    const FEValuesExtractors::Scalar x_displacement(0);
-    const FEValuesExtractors::Scalar y_displacement(1);
-    VectorTools::interpolate_boundary_values(patch.mapping,
-                                             patch.dof_handler,
-                                             BoundaryIds::lower_bottom,
-                                             Functions::ZeroFunction<dim>(dim),
-                                             constraints,
-                                             patch.fe.component_mask(
-                                               y_displacement));
+    patch.add_lower_support(constraints);
+    const FEValuesExtractors::Scalar          x_displacement(0);
     std::map<types::global_dof_index, double> top_x;
     VectorTools::interpolate_boundary_values(patch.mapping,
                                              patch.dof_handler,

@@ -58,24 +58,9 @@ namespace
 
     AffineConstraints<double> constraints;
     patch.make_grid_and_dofs(constraints);
+    patch.add_lower_support(constraints);
+    patch.add_symmetry(constraints);
     const FEValuesExtractors::Scalar x_displacement(0);
-    const FEValuesExtractors::Scalar y_displacement(1);
-    VectorTools::interpolate_boundary_values(patch.mapping,
-                                             patch.dof_handler,
-                                             BoundaryIds::lower_bottom,
-                                             Functions::ZeroFunction<dim>(dim),
-                                             constraints,
-                                             patch.fe.component_mask(
-                                               y_displacement));
-    for (const auto id :
-         {BoundaryIds::lower_symmetry, BoundaryIds::upper_symmetry})
-      VectorTools::interpolate_boundary_values(
-        patch.mapping,
-        patch.dof_handler,
-        id,
-        Functions::ZeroFunction<dim>(dim),
-        constraints,
-        patch.fe.component_mask(x_displacement));
     const auto master = Common::Physics::add_rigid_translation_constraints(
       patch.dof_handler,
       MaterialIds::upper,
