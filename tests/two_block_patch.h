@@ -134,18 +134,17 @@ namespace TwoBlockPatch
       contact.secondary_boundary_id = BoundaryIds::lower_top;
       contact.enforcement  = Common::Contact::Enforcement::lagrange_multiplier;
       contact.friction_law = friction_law;
-      contact.friction_coefficient      = friction_coefficient;
-      contact.penalty_stiffness         = 1e6;
-      contact.ncp_factor                = 1.;
-      contact.tangential_ncp_factor     = 0.5;
-      contact.search_distance           = 0.5;
-      contact.max_active_set_iterations = 10;
-      contact.accelerate_release        = true;
+      contact.friction_coefficient  = friction_coefficient;
+      contact.penalty_stiffness     = 1e6;
+      contact.ncp_factor            = 1.;
+      contact.tangential_ncp_factor = 0.5;
+      contact.search_distance       = 0.5;
+      contact.accelerate_release    = true;
 
       solver_parameters.type      = Common::Solvers::LinearSolverType::mumps;
       solver_parameters.tolerance = 1e-12;
       solver_parameters.max_iterations = 1000;
-      newton_parameters.max_iterations = contact.max_active_set_iterations;
+      newton_parameters.max_iterations = 10;
       newton_parameters.tolerance      = 1e-10;
     }
 

@@ -85,11 +85,6 @@ namespace Common
                           "oversized zone only linearly. It is switched off "
                           "for the rest of the step as soon as it opens too "
                           "much. Affects the iteration path only.");
-        prm.declare_entry("Maximum active set iterations",
-                          "30",
-                          Patterns::Integer(1),
-                          "Semismooth Newton iterations allowed per load "
-                          "step before the step is cut back.");
       }
       prm.leave_subsection();
     }
@@ -116,9 +111,7 @@ namespace Common
         ncp_factor           = prm.get_double("NCP constant factor");
         tangential_ncp_factor =
           prm.get_double("Tangential NCP constant factor");
-        search_distance = prm.get_double("Search distance");
-        max_active_set_iterations =
-          prm.get_integer("Maximum active set iterations");
+        search_distance    = prm.get_double("Search distance");
         accelerate_release = prm.get_bool("Accelerate active set release");
       }
       prm.leave_subsection();

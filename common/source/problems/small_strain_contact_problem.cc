@@ -278,11 +278,8 @@ namespace Common
         return contact_enforcement->is_cycling();
       };
 
-      Solvers::NonlinearSolverParameters newton = nonlinear_solver_parameters;
-      newton.max_iterations =
-        std::min(newton.max_iterations,
-                 contact_parameters.max_active_set_iterations);
-      const auto statistics = Solvers::solve_newton(newton, callbacks, verbose);
+      const auto statistics =
+        Solvers::solve_newton(nonlinear_solver_parameters, callbacks, verbose);
       solve_times.newton += IO::seconds_since(start);
       return statistics;
     }

@@ -65,9 +65,6 @@ namespace Common
       double tangential_ncp_factor;
       /** Largest initial gap for which a secondary point is paired (mm). */
       double search_distance;
-      /** Largest number of semismooth Newton iterations that may change the
-       * active set before the load step is cut back. */
-      unsigned int max_active_set_iterations;
       /** Extrapolate pure release steps of the active set (path only). */
       bool accelerate_release;
     };
