@@ -1,11 +1,13 @@
 /*
  * Shared set-up of the two-block contact patch tests (tests/common): two
- * elastic blocks in plane strain with non-matching meshes, the lower one
- * [0,1]x[0,1] mm (4x4 coarse cells) and the upper one [0,1]x[1,1+H] mm
- * (3x3 coarse cells), one global refinement, and a uniform pressure on the
- * top of the upper block. Contact: secondary = top of the lower block,
- * primary = bottom of the upper block, dual Lagrange multipliers, semismooth
- * Newton. Each test adds its own Dirichlet conditions and checks.
+ * elastic blocks with non-matching meshes, the lower one [0,1]^dim mm (4
+ * coarse cells per direction) and the upper one on top of it, of height H
+ * (3 coarse cells per direction), one global refinement in 2D, and a
+ * uniform pressure on the top of the upper block. The last coordinate is
+ * vertical: y in 2D (plane strain or axisymmetric), z in 3D. Contact:
+ * secondary = top of the lower block, primary = bottom of the upper block,
+ * dual Lagrange multipliers, semismooth Newton. Each test adds its own
+ * Dirichlet conditions and checks.
  */
 #ifndef tests_two_block_patch_h
 #define tests_two_block_patch_h
@@ -58,6 +60,9 @@ namespace TwoBlockPatch
     constexpr types::boundary_id upper_top      = 6; // loaded
     constexpr types::boundary_id upper_symmetry = 7;
     constexpr types::boundary_id upper_side     = 8;
+    // 3D only: the symmetry planes y = 0.
+    constexpr types::boundary_id lower_symmetry_y = 9;
+    constexpr types::boundary_id upper_symmetry_y = 10;
   } // namespace BoundaryIds
 
   namespace MaterialIds
@@ -101,14 +106,14 @@ namespace TwoBlockPatch
       Common::Physics::Kinematics::cartesian;
   };
 
-  /** Loaded area of the interface: L (mm, per unit thickness) or
-   * pi L^2 (mm^2, axisymmetric). */
+  /** Loaded area of the interface: L (mm, per unit thickness, 2D),
+   * pi L^2 (mm^2, axisymmetric) or L^2 (mm^2, 3D). */
   inline double
-  interface_area(const Setting &setting)
+  interface_area(const Setting &setting, const unsigned int dim = 2)
   {
     return setting.kinematics == Common::Physics::Kinematics::axisymmetric ?
              numbers::PI * interface_length * interface_length :
-             interface_length;
+             std::pow(interface_length, dim - 1.);
   }
 
   /**
@@ -158,14 +163,23 @@ namespace TwoBlockPatch
     {
       Triangulation<dim> lower, upper;
       const double       top = 1. + setting.upper_height;
+      Point<dim>         lower_top, upper_bottom, upper_top;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower_top[d]    = 1.;
+          upper_bottom[d] = d == dim - 1 ? 1. : 0.;
+          upper_top[d]    = d == dim - 1 ? top : 1.;
+        }
       GridGenerator::subdivided_hyper_rectangle(lower,
-                                                {4u, 4u},
-                                                Point<dim>(0., 0.),
-                                                Point<dim>(1., 1.));
+                                                std::vector<unsigned int>(dim,
+                                                                          4u),
+                                                Point<dim>(),
+                                                lower_top);
       GridGenerator::subdivided_hyper_rectangle(upper,
-                                                {3u, 3u},
-                                                Point<dim>(0., 1.),
-                                                Point<dim>(1., top));
+                                                std::vector<unsigned int>(dim,
+                                                                          3u),
+                                                upper_bottom,
+                                                upper_top);
       for (const auto &cell : lower.active_cell_iterators())
         cell->set_material_id(MaterialIds::lower);
       for (const auto &cell : upper.active_cell_iterators())
@@ -177,21 +191,26 @@ namespace TwoBlockPatch
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             {
-              const Point<dim> c = cell->face(f)->center();
+              const Point<dim> c    = cell->face(f)->center();
+              const double     z    = c[dim - 1];
+              const bool symmetry_y = dim == 3 && std::abs(c[1]) < tolerance;
               if (cell->material_id() == MaterialIds::lower)
                 cell->face(f)->set_boundary_id(
-                  std::abs(c[1]) < tolerance      ? BoundaryIds::lower_bottom :
-                  std::abs(c[1] - 1.) < tolerance ? BoundaryIds::lower_top :
-                  std::abs(c[0]) < tolerance ? BoundaryIds::lower_symmetry :
-                                               BoundaryIds::lower_side);
+                  std::abs(z) < tolerance      ? BoundaryIds::lower_bottom :
+                  std::abs(z - 1.) < tolerance ? BoundaryIds::lower_top :
+                  std::abs(c[0]) < tolerance   ? BoundaryIds::lower_symmetry :
+                  symmetry_y                   ? BoundaryIds::lower_symmetry_y :
+                                                 BoundaryIds::lower_side);
               else
                 cell->face(f)->set_boundary_id(
-                  std::abs(c[1] - 1.) < tolerance  ? BoundaryIds::upper_bottom :
-                  std::abs(c[1] - top) < tolerance ? BoundaryIds::upper_top :
-                  std::abs(c[0]) < tolerance ? BoundaryIds::upper_symmetry :
-                                               BoundaryIds::upper_side);
+                  std::abs(z - 1.) < tolerance  ? BoundaryIds::upper_bottom :
+                  std::abs(z - top) < tolerance ? BoundaryIds::upper_top :
+                  std::abs(c[0]) < tolerance    ? BoundaryIds::upper_symmetry :
+                  symmetry_y ? BoundaryIds::upper_symmetry_y :
+                               BoundaryIds::upper_side);
             }
-      triangulation.refine_global(1);
+      if (dim == 2)
+        triangulation.refine_global(1);
 
       dof_handler.distribute_dofs(fe);
       constraints.clear();
@@ -199,11 +218,11 @@ namespace TwoBlockPatch
       DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     }
 
-    /** u_y = 0 on the bottom of the lower block. */
+    /** Zero vertical displacement on the bottom of the lower block. */
     void
     add_lower_support(AffineConstraints<double> &constraints) const
     {
-      const FEValuesExtractors::Scalar y_displacement(1);
+      const FEValuesExtractors::Scalar y_displacement(dim - 1);
       VectorTools::interpolate_boundary_values(
         mapping,
         dof_handler,
@@ -213,7 +232,8 @@ namespace TwoBlockPatch
         fe.component_mask(y_displacement));
     }
 
-    /** u_x = 0 on the symmetry lines (x = 0) of both blocks. */
+    /** u_x = 0 on the symmetry lines (planes) x = 0 of both blocks, and
+     * in 3D u_y = 0 on the planes y = 0. */
     void
     add_symmetry(AffineConstraints<double> &constraints) const
     {
@@ -227,6 +247,19 @@ namespace TwoBlockPatch
           Functions::ZeroFunction<dim>(dim),
           constraints,
           fe.component_mask(x_displacement));
+      if (dim == 3)
+        {
+          const FEValuesExtractors::Scalar y_displacement(1);
+          for (const auto id :
+               {BoundaryIds::lower_symmetry_y, BoundaryIds::upper_symmetry_y})
+            VectorTools::interpolate_boundary_values(
+              mapping,
+              dof_handler,
+              id,
+              Functions::ZeroFunction<dim>(dim),
+              constraints,
+              fe.component_mask(y_displacement));
+        }
     }
 
     /**
@@ -299,7 +332,7 @@ namespace TwoBlockPatch
         Vector<double>        cell_rhs(dofs_per_cell);
         std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
         Tensor<1, dim>                       traction;
-        traction[1] = -load_factor * setting.pressure;
+        traction[dim - 1] = -load_factor * setting.pressure;
         const FEValuesExtractors::Vector displacement(0);
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -321,7 +354,7 @@ namespace TwoBlockPatch
                   c.distribute_local_to_global(cell_rhs, dof_indices, rhs);
                 }
       };
-      const double force = setting.pressure * interface_area(setting);
+      const double force = setting.pressure * interface_area(setting, dim);
       load.magnitude     = [force](const double load_factor) {
         return load_factor * force;
       };

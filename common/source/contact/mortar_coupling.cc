@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace Common
@@ -19,6 +20,60 @@ namespace Common
       /** Coverage tolerance: a face counts as covered if the paired part of
        * its measure differs from the whole by less than this fraction. */
       constexpr double coverage_tolerance = 1e-9;
+
+      /** Twice the signed area of a plane polygon (positive if its vertices
+       * run counterclockwise). */
+      double
+      twice_signed_area(const std::vector<Point<2>> &polygon)
+      {
+        double a = 0.;
+        for (unsigned int i = 0; i < polygon.size(); ++i)
+          {
+            const Point<2> &p = polygon[i];
+            const Point<2> &q = polygon[(i + 1) % polygon.size()];
+            a += p[0] * q[1] - q[0] * p[1];
+          }
+        return a;
+      }
+
+      /** Cross product of b - a and c - a (twice the signed area of the
+       * triangle a, b, c). */
+      double
+      orientation(const Point<2> &a, const Point<2> &b, const Point<2> &c)
+      {
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      }
+
+      /**
+       * Sutherland-Hodgman clipping of @p subject by the convex polygon
+       * @p clip; both run counterclockwise. Returns the intersection
+       * (empty if the two do not overlap).
+       */
+      std::vector<Point<2>>
+      clip_polygon(const std::vector<Point<2>> &subject,
+                   const std::vector<Point<2>> &clip)
+      {
+        std::vector<Point<2>> result = subject;
+        for (unsigned int e = 0; e < clip.size() && !result.empty(); ++e)
+          {
+            const Point<2>             &a     = clip[e];
+            const Point<2>             &b     = clip[(e + 1) % clip.size()];
+            const std::vector<Point<2>> input = result;
+            result.clear();
+            for (unsigned int i = 0; i < input.size(); ++i)
+              {
+                const Point<2> &p      = input[i];
+                const Point<2> &q      = input[(i + 1) % input.size()];
+                const double    side_p = orientation(a, b, p);
+                const double    side_q = orientation(a, b, q);
+                if (side_p >= 0.)
+                  result.push_back(p);
+                if ((side_p >= 0.) != (side_q >= 0.))
+                  result.push_back(p + (side_p / (side_p - side_q)) * (q - p));
+              }
+          }
+        return result;
+      }
     } // namespace
 
 
@@ -98,17 +153,34 @@ namespace Common
                 std::max(rows[face.nodes[a]].mesh_size, size);
             }
 
-          // Segments: the parameter interval of face s that projects onto
-          // each candidate primary face. In 2D the segments are intervals;
-          // 3D needs polygon clipping, which is not implemented.
-          double covered_measure = 0.;
-          if constexpr (dim != 2)
-            {
-              AssertThrow(false,
-                          ExcMessage("Mortar segmentation is implemented "
-                                     "for 2D (and axisymmetric) surfaces "
-                                     "only."));
-            }
+          // One integration point: secondary face parameter xi, weight JxW,
+          // partner on primary face m at parameter eta_m.
+          double     covered_measure = 0.;
+          const auto add_point       = [&](const Point<dim - 1> &xi,
+                                     const double          JxW,
+                                     const unsigned int    m,
+                                     const Point<dim - 1> &eta_m) {
+            covered_measure += JxW;
+            secondary->shape_values(s, xi, N);
+            primary->shape_values(m, eta_m, N_primary);
+            const auto &primary_nodes = primary->face(m).nodes;
+            for (unsigned int a = 0; a < n_shape; ++a)
+              {
+                double psi = 0.;
+                for (unsigned int b = 0; b < n_shape; ++b)
+                  psi += A(a, b) * N[b];
+                for (unsigned int k = 0; k < primary_nodes.size(); ++k)
+                  weights[face.nodes[a]][primary_nodes[k]] +=
+                    psi * N_primary[k] * JxW;
+              }
+          };
+
+          // Segments: the part of face s that projects onto each candidate
+          // primary face. In 2D the segments are parameter intervals, cut
+          // along the secondary normal field; in 3D they are polygons,
+          // clipped in an auxiliary plane.
+          if constexpr (dim == 3)
+            integrate_3d_segments(s, search, search_distance, add_point);
           else
             for (const unsigned int m :
                  search.faces_near(secondary->bounding_box(s, search_distance)))
@@ -156,20 +228,10 @@ namespace Common
                         primary->unit_normal(m, projection.eta) * n >= 0.)
                       continue;
 
-                    const double JxW =
-                      secondary->jacobian(s, xi) * weight * ring(x);
-                    covered_measure += JxW;
-                    primary->shape_values(m, projection.eta, N_primary);
-                    const auto &primary_nodes = primary->face(m).nodes;
-                    for (unsigned int a = 0; a < n_shape; ++a)
-                      {
-                        double psi = 0.;
-                        for (unsigned int b = 0; b < n_shape; ++b)
-                          psi += A(a, b) * N[b];
-                        for (unsigned int k = 0; k < primary_nodes.size(); ++k)
-                          weights[face.nodes[a]][primary_nodes[k]] +=
-                            psi * N_primary[k] * JxW;
-                      }
+                    add_point(xi,
+                              secondary->jacobian(s, xi) * weight * ring(x),
+                              m,
+                              projection.eta);
                   }
               }
           if (std::abs(covered_measure - face_measure) >
@@ -223,6 +285,124 @@ namespace Common
             d += M * primary->node(k).reference_position;
           d -= rows[j].weight * secondary->node(j).reference_position;
           rows[j].reference_weighted_gap = rows[j].normal * d;
+        }
+    }
+
+
+
+    // Segment-based integration in 3D (Puso and Laursen 2004; Popp et al.
+    // 2010): an auxiliary plane through the centre of secondary face s,
+    // normal to it; the corners of s and of each candidate primary face,
+    // projected onto the plane along its normal, span two polygons; their
+    // intersection, split into triangles about its centroid, carries
+    // Gauss points, which map back to both faces along the plane normal.
+    // The weight is the plane's area element over |n_s . n_0|, the
+    // secondary face's own; exact for plane faces with straight edges.
+    template <int dim>
+    template <typename AddPoint>
+    void
+    MortarCoupling<dim>::integrate_3d_segments(const unsigned int        s,
+                                               const ContactSearch<dim> &search,
+                                               const double    search_distance,
+                                               const AddPoint &add_point) const
+    {
+      if constexpr (dim == 3)
+        {
+          const Point<dim - 1> centre(0.5, 0.5);
+          const Point<dim>     x0 = secondary->point(s, centre);
+          const Tensor<1, dim> n0 = secondary->unit_normal(s, centre);
+          // Any direction not parallel to n0 spans the plane's axes.
+          Tensor<1, dim> axis;
+          axis[std::abs(n0[0]) < 0.6 ? 0 : 1] = 1.;
+          Tensor<1, dim> e1                   = cross_product_3d(n0, axis);
+          e1 /= e1.norm();
+          const Tensor<1, dim> e2       = cross_product_3d(n0, e1);
+          const auto           to_plane = [&](const Point<dim> &x) {
+            const Tensor<1, dim> d = x - x0;
+            return Point<2>(d * e1, d * e2);
+          };
+          const std::array<Point<dim - 1>, 4> corners = {
+            {Point<dim - 1>(0., 0.),
+             Point<dim - 1>(1., 0.),
+             Point<dim - 1>(1., 1.),
+             Point<dim - 1>(0., 1.)}};
+          const auto polygon = [&](const ContactSurface<dim> &surface,
+                                   const unsigned int         f) {
+            std::vector<Point<2>> p;
+            for (const auto &eta : corners)
+              p.push_back(to_plane(surface.point(f, eta)));
+            if (twice_signed_area(p) < 0.)
+              std::reverse(p.begin(), p.end());
+            return p;
+          };
+
+          const std::vector<Point<2>> secondary_polygon =
+            polygon(*secondary, s);
+          const double secondary_area =
+            0.5 * twice_signed_area(secondary_polygon);
+          const QGaussSimplex<2> triangle_quadrature(
+            std::max(secondary->base_element().degree,
+                     primary->base_element().degree) +
+            2);
+
+          for (const unsigned int m :
+               search.faces_near(secondary->bounding_box(s, search_distance)))
+            {
+              if (primary->unit_normal(m, centre) * n0 >= 0.)
+                continue;
+              const std::vector<Point<2>> clipped =
+                clip_polygon(polygon(*primary, m), secondary_polygon);
+              if (clipped.size() < 3 ||
+                  0.5 * twice_signed_area(clipped) < 1e-12 * secondary_area)
+                continue;
+
+              Point<2> c;
+              for (const auto &v : clipped)
+                c += v / static_cast<double>(clipped.size());
+              for (unsigned int e = 0; e < clipped.size(); ++e)
+                {
+                  const Point<2> &v1  = clipped[e];
+                  const Point<2> &v2  = clipped[(e + 1) % clipped.size()];
+                  const double    det = orientation(c, v1, v2);
+                  if (det <= 0.)
+                    continue;
+                  for (unsigned int q = 0; q < triangle_quadrature.size(); ++q)
+                    {
+                      const Point<2> &r = triangle_quadrature.point(q);
+                      const Point<2>  y = c + r[0] * (v1 - c) + r[1] * (v2 - c);
+                      const Point<dim> y3 = x0 + y[0] * e1 + y[1] * e2;
+
+                      const auto on_secondary =
+                        ContactSearch<dim>::project_along(*secondary,
+                                                          s,
+                                                          y3,
+                                                          n0);
+                      if (!on_secondary.inside(1e-8))
+                        continue;
+                      const auto on_primary =
+                        ContactSearch<dim>::project_along(*primary,
+                                                          m,
+                                                          on_secondary.point,
+                                                          n0);
+                      if (!on_primary.inside(1e-8) ||
+                          std::abs(on_primary.distance) > search_distance)
+                        continue;
+                      const double cosine = std::abs(
+                        secondary->unit_normal(s, on_secondary.eta) * n0);
+                      add_point(on_secondary.eta,
+                                triangle_quadrature.weight(q) * det / cosine,
+                                m,
+                                on_primary.eta);
+                    }
+                }
+            }
+        }
+      else
+        {
+          (void)s;
+          (void)search;
+          (void)search_distance;
+          (void)add_point;
         }
     }
 

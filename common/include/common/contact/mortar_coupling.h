@@ -10,7 +10,9 @@
  * Geometry and integration only: no enforcement, no material.
  *
  * References: B. Wohlmuth, SIAM J. Numer. Anal. 38 (2000) 989-1012;
- * A. Popp, M. Gee, W. Wall, IJNME 79 (2009) 1354-1391 (2D segmentation).
+ * A. Popp, M. Gee, W. Wall, IJNME 79 (2009) 1354-1391 (2D segmentation);
+ * M. Puso, T. Laursen, CMAME 193 (2004) 601-629 and A. Popp et al.,
+ * IJNME 83 (2010) 1428-1465 (3D segmentation in an auxiliary plane).
  */
 #ifndef common_contact_mortar_coupling_h
 #define common_contact_mortar_coupling_h
@@ -72,7 +74,9 @@ namespace Common
        * primary face boundaries, projected along the secondary normal
        * field; each segment is integrated with Gauss quadrature, so the
        * operators are exact for straight faces and the contact patch test
-       * is passed exactly. Implemented for dim = 2.
+       * is passed exactly. In 3D the segments are the polygons in which
+       * the projections of a secondary and a primary face onto an
+       * auxiliary plane overlap (exact for plane faces).
        *
        * @param[in] secondary Secondary surface.
        * @param[in] primary Primary surface.
@@ -134,6 +138,16 @@ namespace Common
       primary_surface() const;
 
     private:
+      /** 3D: integrate secondary face @p s against its primary faces by
+       * polygon clipping; calls @p add_point(xi, JxW, m, eta_m) for every
+       * integration point. */
+      template <typename AddPoint>
+      void
+      integrate_3d_segments(const unsigned int        s,
+                            const ContactSearch<dim> &search,
+                            const double              search_distance,
+                            const AddPoint           &add_point) const;
+
       const ContactSurface<dim>              *secondary = nullptr;
       const ContactSurface<dim>              *primary   = nullptr;
       std::vector<MortarRow<dim>>             rows;
