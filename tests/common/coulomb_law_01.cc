@@ -4,8 +4,10 @@
  * on the stick and slip states and nowhere else among the sampled points;
  * the stick/slip decision and the slip direction; and the generalised
  * derivative against central finite differences in 2D and 3D, at stick and
- * slip points away from the kink |t + c v| = s. Pass criterion for the
- * derivatives: relative difference below 1e-6.
+ * slip points away from the kink |t + c v| = s; the slip direction used
+ * for the friction force of a slipping point and the rate at which it turns
+ * with the slip increment, against central differences. Pass criterion for
+ * the derivatives: relative difference below 1e-6.
  */
 
 #include <common/contact/coulomb_law.h>
@@ -80,6 +82,32 @@ namespace
     return error / scale;
   }
 
+  /** Largest deviation of de = rate (I - e e^T) dv from central
+   * differences of the direction, perturbing each tangential component of
+   * v with t held, relative to rate; the direction must be a unit vector. */
+  template <int dim>
+  double
+  direction_derivative_error(const Tensor<1, dim> &t,
+                             const Tensor<1, dim> &v,
+                             const double          c)
+  {
+    const auto [e, rate] = Law::slip_direction_and_rate(t, v, c);
+    const double h       = 1e-7 * std::max(v.norm(), t.norm() / c);
+    double       error   = std::abs(e.norm() - 1.);
+    for (unsigned int k = 0; k < dim - 1; ++k)
+      {
+        Tensor<1, dim> dv;
+        dv[k] = 1.;
+        const Tensor<1, dim> de =
+          (Law::slip_direction_and_rate(t, v + h * dv, c).first -
+           Law::slip_direction_and_rate(t, v - h * dv, c).first) /
+          (2. * h);
+        const Tensor<1, dim> expected = rate * (dv - (e * dv) * e);
+        error = std::max(error, (de - expected).norm() / rate);
+      }
+    return error;
+  }
+
   template <int dim>
   void
   check()
@@ -124,6 +152,33 @@ namespace
             << pass_fail(e_stick < 1e-6) << std::endl;
     deallog << "derivative in slip matches finite differences: "
             << pass_fail(e_slip < 1e-6) << std::endl;
+
+    // Slip direction and its rate: e = v/|v|, rate 1/|v| where v runs
+    // along the trial t + c v (here at 30 degrees to t in 3D); the trial
+    // direction with rate c/|t + c v| where v vanishes or opposes it.
+    {
+      const Tensor<1, dim> t = tangential<dim>(20., 10.);
+      const Tensor<1, dim> v = tangential<dim>(2e-3, 3e-3);
+      const auto [e, rate]   = Law::slip_direction_and_rate(t, v, c);
+      const bool along_v     = (e - v / v.norm()).norm() < 1e-14 &&
+                           std::abs(rate * v.norm() - 1.) < 1e-14;
+      const Tensor<1, dim> v_back = -1e-4 * t / t.norm();
+      const auto [e_trial, rate_trial] =
+        Law::slip_direction_and_rate(t, v_back, c);
+      const Tensor<1, dim> trial = t + c * v_back;
+      const bool           along_trial =
+        (e_trial - trial / trial.norm()).norm() < 1e-14 &&
+        std::abs(rate_trial * trial.norm() / c - 1.) < 1e-14;
+      const double e_rate = std::max(direction_derivative_error(t, v, c),
+                                     direction_derivative_error(t, v_back, c));
+      deallog << "slip direction along v (v along the trial), rate 1/|v|: "
+              << pass_fail(along_v) << std::endl;
+      deallog << "slip direction along the trial (v against it), rate "
+                 "c/|t + c v|: "
+              << pass_fail(along_trial) << std::endl;
+      deallog << "direction derivative matches finite differences: "
+              << pass_fail(e_rate < 1e-6) << std::endl;
+    }
 
     // In 2D the slip derivative is the active-set form t = s e.
     if (dim == 2)

@@ -1,25 +1,31 @@
 /*
- * Coulomb friction patch test, plane strain: two elastic blocks with
- * non-matching meshes, the lower one [0,1]x[0,1] mm and the upper one
- * [0,1]x[1,1.25] mm (thin, so that the moment of the shear does not lift
- * the trailing edge), both E = 70000 MPa and nu = 0.3 (equal materials: a
- * normal load alone creates no tangential traction). The lower block rests on
- * u_y = 0 with u_x = 0 at the origin; a uniform pressure p = 100 MPa acts on
- * the top of the upper block, whose top is then moved horizontally by a
- * prescribed displacement U. The contact (secondary: top of the lower block,
- * primary: bottom of the upper block) obeys exact Coulomb friction with
- * mu = 0.3, enforced with condensed dual Lagrange multipliers by the
- * semismooth Newton method, in load steps (U = 0, then U = 1e-3, 1e-2 mm; the
- * limit is reached near 5e-3 mm). For Q1 and Q2 the test checks (a) after the
- * normal load every node is closed and sticks, and the tangential contact force
- * equals the horizontal reaction on the top (1e-8 relative to mu p L; it is not
- * zero, since the top is held while the interface expands); (b) for a small U
- * every closed node sticks and the tangential contact force lies strictly below
- * mu p L and equals the horizontal reaction on the top (1e-8 relative); (c) for
- * a large U every closed node slips in the direction of U and the tangential
- * contact force equals mu p L and the reaction to 1e-8 relative: the interface
- * transmits exactly the Coulomb limit; (d) every step converges (iterations
- * printed).
+ * Coulomb friction patch test, plane strain and 3D: two elastic blocks with
+ * non-matching meshes, the lower one [0,1]^dim mm and the upper one of
+ * height 0.25 mm on top of it (thin, so that the moment of the shear does
+ * not lift the trailing edge), both E = 70000 MPa and nu = 0.3 (equal
+ * materials: a normal load alone creates no tangential traction). The
+ * lower block rests on zero vertical displacement with u_x = 0 at the
+ * origin in 2D, and is clamped at its bottom in 3D (a point support is too
+ * soft there); a uniform pressure p = 100 MPa acts on the top of
+ * the upper block, whose top is then moved horizontally by a prescribed
+ * displacement U d (d = e_x in 2D, (0.8, 0.6, 0) in 3D, so that the slip
+ * runs oblique to both meshes). The contact (secondary: top of the lower
+ * block, primary: bottom of the upper block) obeys exact Coulomb friction
+ * with mu = 0.3, enforced with condensed dual Lagrange multipliers by the
+ * semismooth Newton method, in load steps (U = 0, then U = 1e-3, 1e-2 mm;
+ * the limit is reached near 5e-3 mm). For Q1 and Q2 the test checks (a)
+ * after the normal load every node is closed and sticks, and the
+ * tangential contact force equals the horizontal reaction on the top (1e-8
+ * relative to mu p A; it is not zero, since the top is held while the
+ * interface expands); (b) for a small U every closed node sticks and the
+ * tangential contact force lies strictly below mu p A and equals the
+ * horizontal reaction on the top (1e-8 relative); (c) for a large U every
+ * closed node slips forward (t . d > 0) and is everywhere at its Coulomb
+ * limit, |t_j| = mu p_j to 1e-8 relative, the tangential contact force
+ * equals the reaction, and in 2D it is mu p A d (in 3D the slip direction
+ * varies slightly over the interface); (d) every step converges
+ * (iterations printed; the 3D slip direction turns, which the Newton
+ * method linearises).
  */
 
 #include "two_block_patch.h"
@@ -28,6 +34,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -65,15 +72,30 @@ namespace
                const double                             U,
                const Common::Solvers::NewtonStatistics &statistics);
 
-    Patch<dim>                           patch;
-    std::vector<types::global_dof_index> top_x_dofs;
+    Patch<dim> patch;
+    /** Horizontal DoFs of the top of the upper block, per component. */
+    std::array<std::vector<types::global_dof_index>, dim - 1> top_dofs;
   };
 
 
 
-  // The lower block rests on u_y = 0 with u_x = 0 at the origin; the
-  // x-displacement of the top of the upper block is prescribed (its value
-  // is set per load step through ExternalLoad::prescribed_displacements).
+  // Direction of the prescribed shift: oblique to both meshes in 3D.
+  template <int dim>
+  Tensor<1, dim>
+  shift_direction()
+  {
+    Tensor<1, dim> d;
+    d[0] = dim == 2 ? 1. : 0.8;
+    if (dim == 3)
+      d[1] = 0.6;
+    return d;
+  }
+
+
+
+  // The lower block rests on zero vertical displacement; the horizontal
+  // displacement of the top of the upper block is prescribed (set per load
+  // step through ExternalLoad::prescribed_displacements).
   template <int dim>
   void
   PatchTest<dim>::setup_system()
@@ -81,28 +103,43 @@ namespace
     AffineConstraints<double> constraints;
     patch.make_grid_and_dofs(constraints);
     patch.add_lower_support(constraints);
-    const FEValuesExtractors::Scalar          x_displacement(0);
-    std::map<types::global_dof_index, double> top_x;
-    VectorTools::interpolate_boundary_values(patch.mapping,
-                                             patch.dof_handler,
-                                             BoundaryIds::upper_top,
-                                             Functions::ZeroFunction<dim>(dim),
-                                             top_x,
-                                             patch.fe.component_mask(
-                                               x_displacement));
-    for (const auto &entry : top_x)
+    for (unsigned int c = 0; c < dim - 1; ++c)
       {
-        top_x_dofs.push_back(entry.first);
-        constraints.add_line(entry.first);
-      }
-    for (const auto &cell : patch.dof_handler.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        if (cell->vertex(v).norm() < 1e-10)
+        const FEValuesExtractors::Scalar          component(c);
+        std::map<types::global_dof_index, double> top;
+        VectorTools::interpolate_boundary_values(
+          patch.mapping,
+          patch.dof_handler,
+          BoundaryIds::upper_top,
+          Functions::ZeroFunction<dim>(dim),
+          top,
+          patch.fe.component_mask(component));
+        for (const auto &entry : top)
           {
-            const auto dof = cell->vertex_dof_index(v, 0);
-            if (!constraints.is_constrained(dof))
-              constraints.add_line(dof);
+            top_dofs[c].push_back(entry.first);
+            constraints.add_line(entry.first);
           }
+      }
+    // 2D: u_x = 0 at the origin. 3D: the whole bottom is clamped, since a
+    // point support is too soft in 3D to hold the lower block.
+    if (dim == 2)
+      {
+        for (const auto &cell : patch.dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).norm() < 1e-10)
+              {
+                const auto dof = cell->vertex_dof_index(v, 0);
+                if (!constraints.is_constrained(dof))
+                  constraints.add_line(dof);
+              }
+      }
+    else
+      VectorTools::interpolate_boundary_values(patch.mapping,
+                                               patch.dof_handler,
+                                               BoundaryIds::lower_bottom,
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
+                                               constraints);
     constraints.close();
     patch.setup_problem(constraints);
   }
@@ -116,27 +153,37 @@ namespace
     const double                             U,
     const Common::Solvers::NewtonStatistics &statistics)
   {
-    const auto  &coupling    = patch.contact_problem->coupling();
-    const auto  &enforcement = patch.contact_problem->enforcement();
-    const double limit       = mu * setting.pressure * interface_length;
+    const auto          &coupling    = patch.contact_problem->coupling();
+    const auto          &enforcement = patch.contact_problem->enforcement();
+    const double         area        = interface_area(setting, dim);
+    const double         limit       = mu * setting.pressure * area;
+    const Tensor<1, dim> d           = shift_direction<dim>();
 
     // Tangential and normal contact force on the secondary surface, and
-    // the status of the closed nodes.
-    double       tangential = 0., normal = 0.;
-    unsigned int n_closed = 0, n_stick = 0, n_slip_forward = 0;
+    // the status of the closed nodes; a node slips forward if its traction
+    // points along d (to 1e-8).
+    Tensor<1, dim> tangential_force;
+    double         normal = 0., max_limit_error = 0.;
+    unsigned int   n_closed = 0, n_stick = 0, n_slip_forward = 0;
     for (unsigned int j = 0; j < coupling.n_rows(); ++j)
       {
-        const auto &row = coupling.row(j);
+        const auto          &row = coupling.row(j);
+        const Tensor<1, dim> t   = enforcement.tangential_traction(j);
         normal += enforcement.pressure(j) * row.weight;
-        tangential += enforcement.tangential_traction(j)[0] * row.weight;
+        tangential_force += t * row.weight;
         if (!enforcement.is_active(j))
           continue;
         ++n_closed;
         const auto status = enforcement.status(j);
         n_stick += (status == Common::Contact::PointStatus::stick);
-        n_slip_forward += (status == Common::Contact::PointStatus::slip &&
-                           enforcement.tangential_traction(j)[0] > 0.);
+        n_slip_forward +=
+          (status == Common::Contact::PointStatus::slip && t * d > 0.);
+        max_limit_error =
+          std::max(max_limit_error,
+                   std::abs(t.norm() - mu * enforcement.pressure(j)) /
+                     (mu * setting.pressure));
       }
+    const double tangential = tangential_force * d;
 
     // Horizontal reaction on the top: the internal force on its x-DoFs.
     TrilinosWrappers::MPI::Vector internal(
@@ -150,22 +197,22 @@ namespace
       patch.contact_problem->displacement(),
       internal);
     internal.compress(VectorOperation::add);
-    double reaction = 0.;
-    for (const auto dof : top_x_dofs)
-      reaction += internal(dof);
+    Tensor<1, dim> reaction;
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      for (const auto dof : top_dofs[c])
+        reaction[c] += internal(dof);
 
     deallog << name << ": U = " << U << " mm, Newton iterations "
             << statistics.n_iterations << ", converged "
             << yes_no(statistics.converged) << std::endl;
     deallog << "  closed nodes " << n_closed << ", sticking " << n_stick
             << ", slipping forward " << n_slip_forward << std::endl;
-    deallog << "  normal contact force / (p L) = "
-            << format(normal / (setting.pressure * interface_length))
-            << std::endl;
-    deallog << "  tangential contact force / (mu p L) = "
+    deallog << "  normal contact force / (p A) = "
+            << format(normal / (setting.pressure * area)) << std::endl;
+    deallog << "  tangential contact force along d / (mu p A) = "
             << format(tangential / limit, 4) << std::endl;
-    const bool balance = std::abs(reaction - tangential) < 1e-8 * limit;
-    deallog << "  |reaction - tangential force| < 1e-8 mu p L: "
+    const bool balance = (reaction - tangential_force).norm() < 1e-8 * limit;
+    deallog << "  |reaction - tangential force| < 1e-8 mu p A: "
             << yes_no(balance) << std::endl;
 
     bool passed = statistics.converged && n_closed == coupling.n_rows();
@@ -176,9 +223,19 @@ namespace
                std::abs(tangential) < limit;
     else
       {
-        const bool exact = std::abs(tangential - limit) < 1e-8 * limit;
-        deallog << "  |tangential force - mu p L| < 1e-8 mu p L: "
-                << yes_no(exact) << std::endl;
+        // Every node at its Coulomb limit, |t_j| = mu p_j; in 2D, where
+        // all slip along d, the total is mu p A d.
+        bool exact = max_limit_error < 1e-8;
+        deallog << "  max | |t_j| - mu p_j | < 1e-8 mu p: " << yes_no(exact)
+                << std::endl;
+        if (dim == 2)
+          {
+            const bool total =
+              (tangential_force - limit * d).norm() < 1e-8 * limit;
+            deallog << "  |tangential force - mu p A d| < 1e-8 mu p A: "
+                    << yes_no(total) << std::endl;
+            exact = exact && total;
+          }
         passed = passed && balance && exact && n_slip_forward == n_closed;
       }
     deallog << "  " << name << ": " << pass_fail(passed) << std::endl;
@@ -196,8 +253,10 @@ namespace
     load.prescribed_displacements =
       [this, &U](const double,
                  std::map<types::global_dof_index, double> &values) {
-        for (const auto dof : top_x_dofs)
-          values[dof] = U;
+        const Tensor<1, dim> d = shift_direction<dim>();
+        for (unsigned int c = 0; c < dim - 1; ++c)
+          for (const auto dof : top_dofs[c])
+            values[dof] = U * d[c];
       };
     ConditionalOStream                                quiet(std::cout, false);
     const std::vector<std::pair<std::string, double>> steps = {
@@ -226,9 +285,16 @@ main(int argc, char **argv)
   deallog.attach(logfile);
   deallog.depth_console(0);
 
+  deallog << "Plane strain" << std::endl;
   for (const unsigned int degree : {1u, 2u})
     {
       PatchTest<2> test(degree);
+      test.run();
+    }
+  deallog << "3D, shift along (0.8, 0.6, 0)" << std::endl;
+  for (const unsigned int degree : {1u, 2u})
+    {
+      PatchTest<3> test(degree);
       test.run();
     }
 }

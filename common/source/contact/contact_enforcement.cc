@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <tuple>
 
 namespace Common
 {
@@ -95,6 +96,7 @@ namespace Common
       const unsigned int n = coupling.n_rows();
       state.status.assign(n, PointStatus::open);
       state.slip_direction.assign(n, Tensor<1, dim>());
+      state.slip_direction_rate.assign(n, 0.);
       state.pressures.assign(n, 0.);
       state.tangential_tractions.assign(n, Tensor<1, dim>());
       accepted_state = state;
@@ -445,7 +447,8 @@ namespace Common
 
           // Force -mu lambda B_e: D mu lambda e on the secondary node, its
           // reaction on the primary nodes. Tangent -(mu/D) B_e (n^T K_j).
-          gap_gradient(coupling, j, state.slip_direction[j], B_dofs, B);
+          const Tensor<1, dim> &e = state.slip_direction[j];
+          gap_gradient(coupling, j, e, B_dofs, B);
           std::vector<types::global_dof_index> dofs = B_dofs;
           for (const auto &entry : stiffness_row)
             if (std::find(B_dofs.begin(), B_dofs.end(), entry.first) ==
@@ -462,6 +465,27 @@ namespace Common
                   if (it != stiffness_row.end())
                     K(a, b) = -mu / row.weight * B(a) * it->second;
                 }
+            }
+          // In 3D the slip direction e turns with the slip increment v:
+          // de = rate (I - e e^T) dv (CoulombLaw::slip_direction_and_rate),
+          // which only has a component along t2 = n x e; with
+          // t2 . dv = B_t2 . du / D the tangent gains
+          // mu lambda rate / D B_t2 B_t2^T. (In 2D the tangent line holds e
+          // alone and the term vanishes.)
+          if (dim == 3 && state.slip_direction_rate[j] > 0. && pressure > 0.)
+            {
+              Tensor<1, dim> t2;
+              if constexpr (dim == 3)
+                t2 = cross_product_3d(row.normal, e);
+              t2 /= t2.norm();
+              std::vector<types::global_dof_index> t2_dofs;
+              Vector<double>                       B_t2;
+              gap_gradient(coupling, j, t2, t2_dofs, B_t2);
+              const double factor =
+                mu * pressure * state.slip_direction_rate[j] / row.weight;
+              for (unsigned int a = 0; a < B_t2.size(); ++a)
+                for (unsigned int b = 0; b < B_t2.size(); ++b)
+                  K(a, b) += factor * B_t2(a) * B_t2(b);
             }
           constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
         }
@@ -716,7 +740,8 @@ namespace Common
       State proposed = state;
       for (unsigned int j = 0; j < n; ++j)
         {
-          proposed.slip_direction[j] = Tensor<1, dim>();
+          proposed.slip_direction[j]      = Tensor<1, dim>();
+          proposed.slip_direction_rate[j] = 0.;
           if (!next[j])
             {
               proposed.status[j] = PointStatus::open;
@@ -749,10 +774,12 @@ namespace Common
           else
             {
               proposed.status[j] = PointStatus::slip;
-              proposed.slip_direction[j] =
-                CoulombLaw::slip_direction(state.tangential_tractions[j],
-                                           v,
-                                           c_t);
+              std::tie(proposed.slip_direction[j],
+                       proposed.slip_direction_rate[j]) =
+                CoulombLaw::slip_direction_and_rate(
+                  state.tangential_tractions[j],
+                  v,
+                  c_t);
             }
         }
 
@@ -782,12 +809,13 @@ namespace Common
               single[j]               = next_codes[j];
               if (!seen(single))
                 {
-                  State one             = state;
-                  one.status[j]         = proposed.status[j];
-                  one.slip_direction[j] = proposed.slip_direction[j];
-                  proposed              = one;
-                  next_codes            = single;
-                  cycling               = false;
+                  State one                  = state;
+                  one.status[j]              = proposed.status[j];
+                  one.slip_direction[j]      = proposed.slip_direction[j];
+                  one.slip_direction_rate[j] = proposed.slip_direction_rate[j];
+                  proposed                   = one;
+                  next_codes                 = single;
+                  cycling                    = false;
                   break;
                 }
             }
@@ -797,8 +825,9 @@ namespace Common
       for (unsigned int j = 0; j < n; ++j)
         n_changed += (next_codes[j] != current_codes[j]);
       // In 3D a slip direction may turn without changing the code.
-      state.status         = proposed.status;
-      state.slip_direction = proposed.slip_direction;
+      state.status              = proposed.status;
+      state.slip_direction      = proposed.slip_direction;
+      state.slip_direction_rate = proposed.slip_direction_rate;
       history.push_back(next_codes);
       return n_changed;
     }

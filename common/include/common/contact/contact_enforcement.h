@@ -306,6 +306,9 @@ namespace Common
       {
         std::vector<PointStatus>            status;
         std::vector<dealii::Tensor<1, dim>> slip_direction;
+        /** Rate |de/dv| at which the slip direction turns with the slip
+         * increment (1/mm); 0 where the node does not slip. */
+        std::vector<double>                 slip_direction_rate;
         std::vector<double>                 pressures;
         std::vector<dealii::Tensor<1, dim>> tangential_tractions;
       };

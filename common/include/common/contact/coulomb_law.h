@@ -21,6 +21,8 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <utility>
+
 namespace Common
 {
   namespace Contact
@@ -74,6 +76,27 @@ namespace Common
       slip_direction(const dealii::Tensor<1, dim> &traction,
                      const dealii::Tensor<1, dim> &slip_increment,
                      const double                  c);
+
+      /**
+       * @brief Slip direction e for a slipping point's traction
+       * \f$\mu\lambda e\f$ in the next iteration, and the rate
+       * \f$\rho\f$ of its linearisation \f$de = \rho\,(I - e e^T)\,dv\f$
+       * (1/mm).
+       *
+       * Where the slip increment v points along the trial
+       * \f$t + c\,v\f$, e = v/|v| and \f$\rho = 1/|v|\f$: the Coulomb law
+       * at convergence (traction along the slip), linearised exactly, so
+       * that Newton converges quadratically also in 3D, where the
+       * direction turns. Otherwise (a point that has just started to slip,
+       * v = 0, or one whose slip still runs against the trial) e is the
+       * trial direction slip_direction() and \f$\rho = c/|t + c\,v|\f$,
+       * its derivative with t held. In 2D both give the same e.
+       */
+      template <int dim>
+      std::pair<dealii::Tensor<1, dim>, double>
+      slip_direction_and_rate(const dealii::Tensor<1, dim> &traction,
+                              const dealii::Tensor<1, dim> &slip_increment,
+                              const double                  c);
 
       /**
        * @brief Generalised derivative of complementarity() at a point
