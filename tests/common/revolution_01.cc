@@ -1,0 +1,149 @@
+/*
+ * Quarter models of bodies of revolution (common/geometry/revolution.h):
+ * (1) the meridian rectangle [0,2] x [0,3] mm (2 x 3 cells, boundary ids 1
+ * bottom, 2 top, 3 side) revolves into a quarter cylinder: its volume
+ * converges to 3 pi mm^3, the side (id 3) to 3 pi mm^2, the bottom (id 1)
+ * to pi mm^2 and each symmetry plane (ids 4: z = 0, 5: x = 0) to 6 mm^2;
+ * (2) a disc of radius 1 centred at r = 3 (deal.II's hyper_ball, curved
+ * boundary) revolves into a quarter torus whose volume converges to
+ * Pappus's 1.5 pi^2 mm^3 and its surface to 3 pi^2 mm^2. Volumes and areas
+ * are integrated with a Q2 mapping after 0 to 3 global refinements; the
+ * relative errors must fall by at least a factor of 8 per refinement and
+ * lie below 1e-5 at the finest level, and every cell must have a positive
+ * Jacobian at every quadrature point.
+ */
+
+#include <common/geometry/revolution.h>
+
+#include "../tests.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+
+namespace
+{
+  /** Volume and the area of each boundary id, with a Q2 mapping; false in
+   * second if a Jacobian is not positive. */
+  std::pair<std::map<int, double>, bool>
+  measure(const Triangulation<3> &tria)
+  {
+    const MappingQ<3>     mapping(2);
+    const FE_Q<3>         fe(1);
+    const QGauss<3>       quadrature(4);
+    const QGauss<2>       face_quadrature(4);
+    FEValues<3>           fe_values(mapping, fe, quadrature, update_JxW_values);
+    FEFaceValues<3>       fe_face_values(mapping,
+                                   fe,
+                                   face_quadrature,
+                                   update_JxW_values);
+    std::map<int, double> result;
+    bool                  positive = true;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            positive = positive && fe_values.JxW(q) > 0.;
+            result[-1] += fe_values.JxW(q);
+          }
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              fe_face_values.reinit(cell, f);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                result[cell->face(f)->boundary_id()] += fe_face_values.JxW(q);
+            }
+      }
+    return {result, positive};
+  }
+
+  void
+  check(const std::string                         &name,
+        Triangulation<2>                          &meridian,
+        const std::vector<std::pair<int, double>> &exact)
+  {
+    Triangulation<3> tria;
+    Common::Geometry::revolve_quarter(meridian, 4, 5, 10, tria);
+    deallog << name << ": " << tria.n_active_cells() << " coarse cells"
+            << std::endl;
+    std::map<int, double> last_error;
+    bool                  passed = true;
+    for (unsigned int level = 0; level <= 3; ++level)
+      {
+        if (level > 0)
+          tria.refine_global(1);
+        const auto [values, positive] = measure(tria);
+        passed                        = passed && positive;
+        deallog << "  level " << level << ":";
+        for (const auto &[id, value] : exact)
+          {
+            const double error = std::abs(values.at(id) / value - 1.);
+            deallog << " "
+                    << (id < 0 ? std::string("volume") :
+                                 "id " + std::to_string(id))
+                    << " " << error;
+            if (level > 0 && last_error[id] > 1e-12)
+              passed = passed && error < last_error[id] / 8.;
+            if (level == 3)
+              passed = passed && error < 1e-5;
+            last_error[id] = error;
+          }
+        deallog << std::endl;
+      }
+    deallog << name << ": " << (passed ? "PASS" : "FAIL") << std::endl;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  initlog(3);
+  deallog << std::scientific;
+  {
+    Triangulation<2> meridian;
+    GridGenerator::subdivided_hyper_rectangle(meridian,
+                                              {2u, 3u},
+                                              Point<2>(0., 0.),
+                                              Point<2>(2., 3.));
+    for (const auto &cell : meridian.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<2> c = cell->face(f)->center();
+            cell->face(f)->set_boundary_id(std::abs(c[1]) < 1e-12      ? 1 :
+                                           std::abs(c[1] - 3.) < 1e-12 ? 2 :
+                                           std::abs(c[0] - 2.) < 1e-12 ? 3 :
+                                                                         0);
+          }
+    const double pi = numbers::PI;
+    check("quarter cylinder",
+          meridian,
+          {{-1, 3. * pi}, {3, 3. * pi}, {1, pi}, {4, 6.}, {5, 6.}});
+  }
+  {
+    Triangulation<2> meridian;
+    GridGenerator::hyper_ball(meridian, Point<2>(3., 0.), 1.);
+    meridian.set_all_manifold_ids_on_boundary(0);
+    for (const auto &cell : meridian.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          cell->face(f)->set_boundary_id(1);
+    const double pi = numbers::PI;
+    check("quarter torus", meridian, {{-1, 1.5 * pi * pi}, {1, 3. * pi * pi}});
+  }
+}
