@@ -28,4 +28,16 @@ initlog(const unsigned int precision = 6)
   dealii::deallog.precision(precision);
 }
 
+/**
+ * Attach dealii::deallog to the file "output" in the current directory,
+ * without console echo, keeping deal.II's default number format.
+ */
+inline void
+attach_log()
+{
+  static std::ofstream logfile("output");
+  dealii::deallog.attach(logfile);
+  dealii::deallog.depth_console(0);
+}
+
 #endif

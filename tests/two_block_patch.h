@@ -19,6 +19,7 @@
 #include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/newton_solver.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
@@ -40,6 +41,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -237,30 +239,23 @@ namespace TwoBlockPatch
     void
     add_symmetry(AffineConstraints<double> &constraints) const
     {
-      const FEValuesExtractors::Scalar x_displacement(0);
-      for (const auto id :
-           {BoundaryIds::lower_symmetry, BoundaryIds::upper_symmetry})
-        VectorTools::interpolate_boundary_values(
-          mapping,
-          dof_handler,
-          id,
-          Functions::ZeroFunction<dim>(dim),
-          constraints,
-          fe.component_mask(x_displacement));
+      std::vector<std::pair<unsigned int, std::vector<types::boundary_id>>>
+        planes = {
+          {0, {BoundaryIds::lower_symmetry, BoundaryIds::upper_symmetry}}};
       if (dim == 3)
-        {
-          const FEValuesExtractors::Scalar y_displacement(1);
-          for (const auto id :
-               {BoundaryIds::lower_symmetry_y, BoundaryIds::upper_symmetry_y})
-            VectorTools::interpolate_boundary_values(
-              mapping,
-              dof_handler,
-              id,
-              Functions::ZeroFunction<dim>(dim),
-              constraints,
-              fe.component_mask(y_displacement));
-        }
+        planes.push_back(
+          {1, {BoundaryIds::lower_symmetry_y, BoundaryIds::upper_symmetry_y}});
+      for (const auto &[component, ids] : planes)
+        for (const auto id : ids)
+          VectorTools::interpolate_boundary_values(
+            mapping,
+            dof_handler,
+            id,
+            Functions::ZeroFunction<dim>(dim),
+            constraints,
+            fe.component_mask(FEValuesExtractors::Scalar(component)));
     }
+
 
     /**
      * Materials, physics and the contact problem, with the closed
@@ -359,6 +354,20 @@ namespace TwoBlockPatch
         return load_factor * force;
       };
       return load;
+    }
+
+    /** Solve at full load with the external load of external_load(),
+     * log a failure, and accept the state. */
+    Common::Solvers::NewtonStatistics
+    solve_and_commit()
+    {
+      ConditionalOStream quiet(std::cout, false);
+      const auto         statistics =
+        contact_problem->solve(1., external_load(), quiet);
+      if (!statistics.converged)
+        deallog << "Newton failure: " << statistics.failure << std::endl;
+      contact_problem->commit();
+      return statistics;
     }
 
     const unsigned int degree;

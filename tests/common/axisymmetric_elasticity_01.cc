@@ -17,6 +17,8 @@
 #include <common/physics/boundary_loads.h>
 #include <common/physics/small_strain_elasticity.h>
 
+#include "../tests.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
@@ -167,9 +169,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                    logfile("output");
-  deallog.attach(logfile);
-  deallog.depth_console(0);
+  attach_log();
 
   for (const unsigned int degree : {1u, 2u})
     {

@@ -16,6 +16,8 @@
 #include <common/analytic/hertz.h>
 #include <common/analytic/spence.h>
 
+#include "../tests.h"
+
 #include <deal.II/base/logstream.h>
 
 #include <cmath>
@@ -28,9 +30,7 @@ using namespace Common::Analytic;
 int
 main()
 {
-  std::ofstream logfile("output");
-  deallog.attach(logfile);
-  deallog.depth_console(0);
+  attach_log();
 
   const HertzLineContact hertz(210000., 0.3, 70000., 0.3, 50., 35000.);
   const double           e_star = hertz.contact_modulus();

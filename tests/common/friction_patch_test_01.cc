@@ -28,6 +28,7 @@
  * method linearises).
  */
 
+#include "../tests.h"
 #include "two_block_patch.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -281,9 +282,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                    logfile("output");
-  deallog.attach(logfile);
-  deallog.depth_console(0);
+  attach_log();
 
   deallog << "Plane strain" << std::endl;
   for (const unsigned int degree : {1u, 2u})

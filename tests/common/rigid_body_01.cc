@@ -23,6 +23,7 @@
 #include <common/contact/contact_postprocessor.h>
 #include <common/physics/rigid_body.h>
 
+#include "../tests.h"
 #include "two_block_patch.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -70,12 +71,7 @@ namespace
     constraints.close();
     patch.setup_problem(constraints);
 
-    ConditionalOStream quiet(std::cout, false);
-    const auto         statistics =
-      patch.contact_problem->solve(1., patch.external_load(), quiet);
-    if (!statistics.converged)
-      deallog << "Newton failure: " << statistics.failure << std::endl;
-    patch.contact_problem->commit();
+    const auto statistics = patch.solve_and_commit();
 
     const auto  &coupling    = patch.contact_problem->coupling();
     const auto  &enforcement = patch.contact_problem->enforcement();
@@ -196,9 +192,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                    logfile("output");
-  deallog.attach(logfile);
-  deallog.depth_console(0);
+  attach_log();
 
   for (const Setting &setting : {plane_strain, axisymmetric_stack})
     {

@@ -11,6 +11,8 @@
 
 #include <common/analytic/rounded_punch.h>
 
+#include "../tests.h"
+
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -62,9 +64,7 @@ namespace
 int
 main()
 {
-  std::ofstream logfile("output");
-  deallog.attach(logfile);
-  deallog.depth_console(0);
+  attach_log();
 
   // (a) FENET benchmark 2: steel punch on aluminium, b = 40, R = 10,
   // P = 100 MPa times pi 50^2.
