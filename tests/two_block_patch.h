@@ -108,6 +108,26 @@ namespace TwoBlockPatch
       Common::Physics::Kinematics::cartesian;
   };
 
+  /** Steel on aluminium, p = 100 MPa, unit heights: plane strain. */
+  inline const Setting plane_strain_stack{70000., 210000., 0.3, 1., 100.};
+  /** The same as two stacked cylinders of radius 1 (axisymmetric). */
+  inline const Setting axisymmetric_stack{
+    70000.,
+    210000.,
+    0.3,
+    1.,
+    100.,
+    Common::Physics::Kinematics::axisymmetric};
+
+  /** Title line of a setting's part of a test log. */
+  inline std::string
+  title(const Setting &setting)
+  {
+    return setting.kinematics == Common::Physics::Kinematics::axisymmetric ?
+             "Axisymmetric: two cylinders of radius 1 on the axis x = 0" :
+             "Plane strain";
+  }
+
   /** Loaded area of the interface: L (mm, per unit thickness, 2D),
    * pi L^2 (mm^2, axisymmetric) or L^2 (mm^2, 3D). */
   inline double

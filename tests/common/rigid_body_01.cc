@@ -38,13 +38,6 @@ using namespace TwoBlockPatch;
 
 namespace
 {
-  const Setting plane_strain{70000., 210000., 0.3, 1., 100.};
-  const Setting axisymmetric_stack{70000.,
-                                   210000.,
-                                   0.3,
-                                   1.,
-                                   100.,
-                                   Common::Physics::Kinematics::axisymmetric};
 
 
 
@@ -194,13 +187,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   attach_log();
 
-  for (const Setting &setting : {plane_strain, axisymmetric_stack})
+  for (const Setting &setting : {plane_strain_stack, axisymmetric_stack})
     {
-      deallog
-        << (setting.kinematics == Common::Physics::Kinematics::axisymmetric ?
-              "Axisymmetric: two cylinders of radius 1 on the axis x = 0" :
-              "Plane strain")
-        << std::endl;
+      deallog << title(setting) << std::endl;
       for (const unsigned int degree : {1u, 2u})
         {
           deallog << "Q" << degree << std::endl;
