@@ -618,35 +618,24 @@ namespace Punch3d
                      << std::endl;
     make_grid();
     setup_system();
-    Common::Problems::print_setup<dim>(console, dof_handler, *contact_problem);
     timings.set("setup_s", Common::IO::seconds_since(start));
-    if (parameters.run_control.dry_run)
-      {
-        console.stream() << "Dry run: parameters, mesh and contact pairing "
-                            "are valid."
-                         << std::endl;
-        return;
-      }
-
+    if (!Common::Problems::begin_run<dim>(console,
+                                          dof_handler,
+                                          *contact_problem,
+                                          parameters,
+                                          {"summary.json",
+                                           "contact_profile.csv",
+                                           "reference_profile.csv",
+                                           "fe_reference.csv",
+                                           "contact_pressure.png",
+                                           "contact_pressure.gp",
+                                           "tangential_traction.png",
+                                           "tangential_traction.gp",
+                                           "slip.png",
+                                           "slip.gp",
+                                           "solution.pvd"}))
+      return;
     const auto &out = parameters.output;
-    out.prepare_directory({"summary.json",
-                           "contact_profile.csv",
-                           "reference_profile.csv",
-                           "fe_reference.csv",
-                           "contact_pressure.png",
-                           "contact_pressure.gp",
-                           "tangential_traction.png",
-                           "tangential_traction.gp",
-                           "slip.png",
-                           "slip.gp",
-                           "solution.pvd",
-                           "used_parameters.prm"},
-                          mpi_communicator);
-    if (console.is_root())
-      {
-        std::ofstream used(out.path("used_parameters.prm"));
-        used << parameters.used_parameters;
-      }
 
     const auto stepping = Common::Problems::run_load_steps<dim>(
       *contact_problem,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <utility>
 #include <vector>
 
@@ -54,6 +55,36 @@ namespace Common
                        << " secondary nodes, " << n_paired << " paired, "
                        << problem.enforcement().n_active()
                        << " initially closed" << std::endl;
+    }
+
+
+
+    template <int dim>
+    bool
+    begin_run(IO::Console                          &console,
+              const DoFHandler<dim>                &dof_handler,
+              const SmallStrainContactProblem<dim> &problem,
+              const ContactRunParameters           &parameters,
+              const std::vector<std::string>       &result_files)
+    {
+      print_setup<dim>(console, dof_handler, problem);
+      if (parameters.run_control.dry_run)
+        {
+          console.stream() << "Dry run: parameters, mesh and contact pairing "
+                              "are valid."
+                           << std::endl;
+          return false;
+        }
+      std::vector<std::string> files = result_files;
+      files.push_back("used_parameters.prm");
+      parameters.output.prepare_directory(files,
+                                          dof_handler.get_communicator());
+      if (console.is_root())
+        {
+          std::ofstream used(parameters.output.path("used_parameters.prm"));
+          used << parameters.used_parameters;
+        }
+      return true;
     }
 
 
@@ -129,6 +160,18 @@ namespace Common
     print_setup(IO::Console &,
                 const DoFHandler<3> &,
                 const SmallStrainContactProblem<3> &);
+    template bool
+    begin_run(IO::Console &,
+              const DoFHandler<2> &,
+              const SmallStrainContactProblem<2> &,
+              const ContactRunParameters &,
+              const std::vector<std::string> &);
+    template bool
+    begin_run(IO::Console &,
+              const DoFHandler<3> &,
+              const SmallStrainContactProblem<3> &,
+              const ContactRunParameters &,
+              const std::vector<std::string> &);
     template Solvers::LoadSteppingStatistics
     run_load_steps(SmallStrainContactProblem<2> &,
                    const ExternalLoad &,

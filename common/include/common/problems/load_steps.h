@@ -12,6 +12,7 @@
 #include <common/io/json_writer.h>
 #include <common/io/output_parameters.h>
 #include <common/physics/small_strain_elasticity.h>
+#include <common/problems/contact_run_parameters.h>
 #include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/load_stepping.h>
 
@@ -19,6 +20,8 @@
 #include <deal.II/fe/mapping.h>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace Common
 {
@@ -35,6 +38,21 @@ namespace Common
     print_setup(IO::Console                          &console,
                 const dealii::DoFHandler<dim>        &dof_handler,
                 const SmallStrainContactProblem<dim> &problem);
+
+    /**
+     * @brief The common start of a contact run once the mesh and the
+     * contact problem are set up: print_setup(); for a dry run, say that
+     * the input is valid and return false; otherwise clear the output
+     * directory of @p result_files (IO::OutputParameters::
+     * prepare_directory()), write used_parameters.prm and return true.
+     */
+    template <int dim>
+    bool
+    begin_run(IO::Console                          &console,
+              const dealii::DoFHandler<dim>        &dof_handler,
+              const SmallStrainContactProblem<dim> &problem,
+              const ContactRunParameters           &parameters,
+              const std::vector<std::string>       &result_files);
 
     /**
      * @brief The Newton record of a run for summary.json: total_iterations,
