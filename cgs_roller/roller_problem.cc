@@ -12,6 +12,7 @@
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
+#include <common/physics/boundary_conditions.h>
 #include <common/problems/load_steps.h>
 #include <common/solvers/linear_solver.h>
 
@@ -140,28 +141,12 @@ namespace CgsRoller
     // Hanging nodes of the graded mesh, and homogeneous Dirichlet
     // conditions on the Newton increment: fixed block bottom, u_x = 0 on
     // both symmetry lines.
-    constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(
-      complete_index_set(dof_handler.n_dofs()));
-    DoFTools::make_hanging_node_constraints(
-      dof_handler,
-      constraints_dirichlet_and_hanging_nodes);
-    const FEValuesExtractors::Scalar x_displacement(0);
-    VectorTools::interpolate_boundary_values(
+    Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
-      BoundaryIds::block_bottom,
-      Functions::ZeroFunction<dim>(dim),
+      {BoundaryIds::block_bottom},
+      {{0, {BoundaryIds::block_symmetry, BoundaryIds::roller_symmetry}}},
       constraints_dirichlet_and_hanging_nodes);
-    for (const auto id :
-         {BoundaryIds::block_symmetry, BoundaryIds::roller_symmetry})
-      VectorTools::interpolate_boundary_values(
-        mapping,
-        dof_handler,
-        id,
-        Functions::ZeroFunction<dim>(dim),
-        constraints_dirichlet_and_hanging_nodes,
-        fe.component_mask(x_displacement));
     constraints_dirichlet_and_hanging_nodes.close();
 
     // The point load acts on the vertical DoF of the roller's top vertex.

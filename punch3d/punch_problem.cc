@@ -11,6 +11,7 @@
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
+#include <common/physics/boundary_conditions.h>
 #include <common/physics/boundary_loads.h>
 #include <common/physics/rigid_body.h>
 #include <common/problems/load_steps.h>
@@ -197,30 +198,15 @@ namespace Punch3d
     // Hanging nodes of the graded mesh, and homogeneous Dirichlet
     // conditions on the Newton increment: fixed foundation bottom, u_r = 0
     // on the axis of both bodies.
-    constraints_dirichlet_and_hanging_nodes.clear();
-    constraints_dirichlet_and_hanging_nodes.reinit(
-      complete_index_set(dof_handler.n_dofs()));
-    DoFTools::make_hanging_node_constraints(
-      dof_handler,
-      constraints_dirichlet_and_hanging_nodes);
-    const FEValuesExtractors::Scalar r_displacement(0);
-    VectorTools::interpolate_boundary_values(
+    Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
-      BoundaryIds::foundation_bottom,
-      Functions::ZeroFunction<dim>(dim),
+      {BoundaryIds::foundation_bottom},
+      {{0, {BoundaryIds::foundation_axis, BoundaryIds::punch_axis}}},
       constraints_dirichlet_and_hanging_nodes);
-    for (const auto id :
-         {BoundaryIds::foundation_axis, BoundaryIds::punch_axis})
-      VectorTools::interpolate_boundary_values(
-        mapping,
-        dof_handler,
-        id,
-        Functions::ZeroFunction<dim>(dim),
-        constraints_dirichlet_and_hanging_nodes,
-        fe.component_mask(r_displacement));
     // A rigid punch follows the axial DoF of its top vertex on the axis;
     // u_r = 0 throughout.
+    const FEValuesExtractors::Scalar r_displacement(0);
     if (parameters.model.rigid_punch)
       Common::Physics::add_rigid_translation_constraints(
         dof_handler,
