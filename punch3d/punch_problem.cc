@@ -12,6 +12,7 @@
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
 #include <common/physics/boundary_conditions.h>
+#include <common/physics/boundary_displacement.h>
 #include <common/physics/boundary_loads.h>
 #include <common/physics/rigid_body.h>
 #include <common/problems/load_steps.h>
@@ -45,6 +46,29 @@ namespace Punch3d
       if (std::abs(mu - 0.1) < 1e-12)
         return -0.1288;
       return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /** Component @p c of the displacement at radius @p r, interpolated
+     * linearly between the samples of @p surface (sorted by r). */
+    double
+    surface_displacement_at(
+      const std::vector<Common::Physics::BoundaryDisplacementPoint<2>> &surface,
+      const double                                                      r,
+      const unsigned int                                                c)
+    {
+      AssertThrow(!surface.empty(), ExcMessage("Empty surface profile."));
+      if (r <= surface.front().position[0])
+        return surface.front().displacement[c];
+      for (unsigned int i = 1; i < surface.size(); ++i)
+        if (r <= surface[i].position[0])
+          {
+            const double r0 = surface[i - 1].position[0];
+            const double r1 = surface[i].position[0];
+            const double w  = (r - r0) / (r1 - r0);
+            return (1. - w) * surface[i - 1].displacement[c] +
+                   w * surface[i].displacement[c];
+          }
+      return surface.back().displacement[c];
     }
   } // namespace
 
@@ -405,6 +429,32 @@ namespace Punch3d
     // frictionless curve is not tabulated, and FE centre pressures differ
     // by less than their spread).
     const double p_centre_marc = fe_reference.front().pressure_marc;
+    // The foundation top, r from the axis to the foundation's rim.
+    const auto surface =
+      Common::Physics::boundary_displacements(mapping,
+                                              dof_handler,
+                                              contact_problem->displacement(),
+                                              BoundaryIds::foundation_top);
+    // The largest inward (toward the axis) radial displacement.
+    double ur_min = 0., ur_min_radius = 0.;
+    for (const auto &p : surface)
+      if (p.displacement[0] < ur_min)
+        {
+          ur_min        = p.displacement[0];
+          ur_min_radius = p.position[0];
+        }
+    const auto marc_surface =
+      Common::Analytic::fenet_punch_marc_surface_displacements();
+    const bool marc_has_mu = std::isfinite(uz_marc);
+    const auto marc_uz     = [mu](const auto &p) {
+      return mu == 0. ? p.uz_mu0 : p.uz_mu01;
+    };
+    const auto marc_ur = [mu](const auto &p) {
+      return mu == 0. ? p.ur_mu0 : p.ur_mu01;
+    };
+    double marc_ur_min = 0.;
+    for (const auto &p : marc_surface)
+      marc_ur_min = std::min(marc_ur_min, marc_ur(p));
     const double force_error =
       std::abs(r.contact_force - r.applied_force) / r.applied_force;
 
@@ -420,12 +470,32 @@ namespace Punch3d
                            r.contact_radius,
                            "a/a_halfspace",
                            r.contact_radius / half_space.contact_radius());
-    if (std::isfinite(uz_marc))
+    if (marc_has_mu)
       console.print_quantity("Foundation top on the axis, u_z",
                              "mm",
                              r.axis_displacement,
                              "uz/uz_MARC",
                              r.axis_displacement / uz_marc);
+    if (marc_has_mu)
+      {
+        // Outside the contact zone the displacements depend on the total
+        // load rather than on its distribution.
+        for (const auto &p : marc_surface)
+          if (p.r == 60. || p.r == 80.)
+            console.print_quantity(
+              "Foundation top at r = " + std::to_string(static_cast<int>(p.r)) +
+                " mm, u_z",
+              "mm",
+              surface_displacement_at(surface, p.r, 1),
+              "uz/uz_MARC",
+              surface_displacement_at(surface, p.r, 1) / marc_uz(p));
+        console.print_quantity("Foundation top, largest inward u_r",
+                               "mm",
+                               ur_min,
+                               "ur/ur_MARC",
+                               ur_min / marc_ur_min);
+        console.print_quantity("  at radius", "mm", ur_min_radius);
+      }
     if (friction)
       console.print_quantity("Peak tangential traction",
                              "MPa",
@@ -444,6 +514,17 @@ namespace Punch3d
             const double x = 1.25 * a_ref * i / 600.;
             reference << x << ',' << half_space.pressure(x) << '\n';
           }
+        std::ofstream displacements(out.path("surface_displacement.csv"));
+        displacements << "r,u_r,u_z\n" << std::setprecision(8);
+        for (const auto &p : surface)
+          displacements << p.position[0] << ',' << p.displacement[0] << ','
+                        << p.displacement[1] << '\n';
+        std::ofstream marc_displacements(
+          out.path("marc_surface_displacement.csv"));
+        marc_displacements << "r,u_r_mu0,u_z_mu0,u_r_mu01,u_z_mu01\n";
+        for (const auto &p : marc_surface)
+          marc_displacements << p.r << ',' << p.ur_mu0 << ',' << p.uz_mu0 << ','
+                             << p.ur_mu01 << ',' << p.uz_mu01 << '\n';
         std::ofstream curves(out.path("fe_reference.csv"));
         curves << "r,pressure_marc,pressure_abaqus,tangential_traction_marc,"
                   "tangential_traction_abaqus\n";
@@ -508,6 +589,36 @@ namespace Punch3d
         slip.series  = {{"contact_profile.csv", 1, 4, fe_label, fe_style}};
         plots.emplace_back("slip", slip);
 
+        // MSC.Marc's curves of this mu (columns 2-3 for mu = 0, 4-5 for
+        // mu = 0.1); both for any other mu.
+        const std::string foundation_x_label =
+          "r, distance from the axis on the foundation top [mm]";
+        for (const unsigned int c : {0u, 1u})
+          {
+            const std::string           name = c == 0 ? "u_r" : "u_z";
+            Common::IO::PlotDescription plot;
+            plot.title =
+              "Foundation top, " + name + ", mu = " + mu_stream.str();
+            plot.x_label = foundation_x_label;
+            plot.y_label =
+              name + (c == 0 ? " (+ away from the axis) [mm]" : " [mm]");
+            plot.x_range =
+              "[0:" + std::to_string(parameters.geometry.foundation_radius) +
+              "]";
+            for (const bool friction_curve : {false, true})
+              if (!marc_has_mu || friction_curve == (mu != 0.))
+                plot.series.push_back(
+                  {"marc_surface_displacement.csv",
+                   1,
+                   (friction_curve ? 4u : 2u) + c,
+                   friction_curve ? "MSC.Marc (mu = 0.1)" : "MSC.Marc (mu = 0)",
+                   friction_curve ? "points pt 4 ps 1.5" :
+                                    "points pt 6 ps 1.5"});
+            plot.series.push_back(
+              {"surface_displacement.csv", 1, 2 + c, fe_label, "lines lw 2"});
+            plots.emplace_back("surface_displacement_" + name, plot);
+          }
+
         if (!Common::IO::write_plots(out.directory, plots))
           console.stream() << "  Note: gnuplot not available; plot scripts "
                               "written without PNG."
@@ -560,6 +671,15 @@ namespace Punch3d
       .set("n_active_nodes", enforcement.n_active());
     if (friction)
       results.set("stick_radius_mm", r.stick_radius);
+    JsonObject foundation_top;
+    foundation_top.set("uz_axis_mm", r.axis_displacement)
+      .set("uz_r20_mm", surface_displacement_at(surface, 20., 1))
+      .set("uz_r40_mm", surface_displacement_at(surface, 40., 1))
+      .set("uz_r60_mm", surface_displacement_at(surface, 60., 1))
+      .set("uz_r80_mm", surface_displacement_at(surface, 80., 1))
+      .set("min_ur_mm", ur_min)
+      .set("min_ur_radius_mm", ur_min_radius);
+    results.set("foundation_top", foundation_top);
 
     JsonObject reference;
     reference
@@ -569,15 +689,33 @@ namespace Punch3d
       .set("half_space_contact_radius_mm", half_space.contact_radius())
       .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.))
       .set("marc_pressure_at_centre_MPa", p_centre_marc);
-    if (std::isfinite(uz_marc))
-      reference.set("marc_foundation_top_axis_uz_mm", uz_marc);
+    if (marc_has_mu)
+      {
+        reference.set("marc_foundation_top_axis_uz_mm", uz_marc);
+        JsonObject marc_top;
+        for (const auto &p : marc_surface)
+          if (p.r == 20. || p.r == 40. || p.r == 60. || p.r == 80.)
+            marc_top.set("uz_r" + std::to_string(static_cast<int>(p.r)) + "_mm",
+                         marc_uz(p));
+        marc_top.set("min_ur_mm", marc_ur_min);
+        reference.set("marc_foundation_top", marc_top);
+      }
 
     JsonObject ratios;
     ratios.set("pressure_at_centre_marc", r.centre_pressure / p_centre_marc)
       .set("contact_radius_half_space",
            r.contact_radius / half_space.contact_radius());
-    if (std::isfinite(uz_marc))
-      ratios.set("foundation_top_axis_uz_marc", r.axis_displacement / uz_marc);
+    if (marc_has_mu)
+      {
+        ratios.set("foundation_top_axis_uz_marc",
+                   r.axis_displacement / uz_marc);
+        for (const auto &p : marc_surface)
+          if (p.r == 60. || p.r == 80.)
+            ratios.set("foundation_top_uz_r" +
+                         std::to_string(static_cast<int>(p.r)) + "_marc",
+                       surface_displacement_at(surface, p.r, 1) / marc_uz(p));
+        ratios.set("foundation_top_min_ur_marc", ur_min / marc_ur_min);
+      }
 
     JsonObject summary;
     summary.set("benchmark", "punch3d")
@@ -619,6 +757,12 @@ namespace Punch3d
                                            "tangential_traction.gp",
                                            "slip.png",
                                            "slip.gp",
+                                           "surface_displacement.csv",
+                                           "marc_surface_displacement.csv",
+                                           "surface_displacement_u_r.png",
+                                           "surface_displacement_u_r.gp",
+                                           "surface_displacement_u_z.png",
+                                           "surface_displacement_u_z.gp",
                                            "solution.pvd"}))
       return;
     const auto &out = parameters.output;

@@ -112,6 +112,28 @@ namespace Common
      */
     std::vector<PunchReferencePoint>
     fenet_punch_fe_reference();
+
+    /** One radius of the MSC.Marc foundation-top displacements of
+     * benchmark 2; NaN where the curve is not tabulated. */
+    struct PunchSurfaceReferencePoint
+    {
+      /** Radius r (mm). */
+      double r;
+      /** Axial displacement u_z for mu = 0 and mu = 0.1 (mm). */
+      double uz_mu0, uz_mu01;
+      /** Radial displacement u_r for mu = 0 and mu = 0.1 (mm, positive
+       * away from the axis). */
+      double ur_mu0, ur_mu01;
+    };
+
+    /**
+     * @brief The MSC.Marc displacement curves of the foundation top of
+     * FENET benchmark 2 (NAFEMS R0094, digitised in solids4foam;
+     * REFERENCES.md 2.2) at the tabulated radii, from the axis (listed at
+     * r = 0.5 mm) to r = 80 mm.
+     */
+    std::vector<PunchSurfaceReferencePoint>
+    fenet_punch_marc_surface_displacements();
   } // namespace Analytic
 } // namespace Common
 

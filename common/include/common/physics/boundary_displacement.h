@@ -1,0 +1,64 @@
+/**
+ * @file boundary_displacement.h
+ * The displacement field along a boundary, sampled at the finite element's
+ * support points: the surface profiles that benchmark reports compare
+ * with reference curves (u_r and u_z of a foundation top, for example).
+ */
+#ifndef common_physics_boundary_displacement_h
+#define common_physics_boundary_displacement_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vector>
+
+namespace Common
+{
+  namespace Physics
+  {
+    /** One sample of a boundary displacement profile. */
+    template <int dim>
+    struct BoundaryDisplacementPoint
+    {
+      /** Position in the reference configuration (mm). */
+      dealii::Point<dim> position;
+      /** Displacement (mm). */
+      dealii::Tensor<1, dim> displacement;
+
+      /** Serialisation for the exchange between processes. */
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int /*version*/)
+      {
+        archive &position &displacement;
+      }
+    };
+
+    /**
+     * @brief The displacement @p u at every support point of the faces on
+     * boundary @p boundary_id, positions mapped by @p mapping, each point
+     * once, sorted by coordinate @p sort_coordinate (then by the others).
+     *
+     * @p u must be readable at the DoFs of the locally owned cells (a
+     * ghosted or fully replicated vector); each process samples its own
+     * cells and the result, identical on every process of the DoF
+     * handler's communicator, is the union. The first dim components of
+     * the finite element are the displacement, and the element must have
+     * support points (Lagrange elements).
+     */
+    template <int dim>
+    std::vector<BoundaryDisplacementPoint<dim>>
+    boundary_displacements(const dealii::Mapping<dim>    &mapping,
+                           const dealii::DoFHandler<dim> &dof_handler,
+                           const dealii::TrilinosWrappers::MPI::Vector &u,
+                           const dealii::types::boundary_id boundary_id,
+                           const unsigned int sort_coordinate = 0);
+  } // namespace Physics
+} // namespace Common
+
+#endif
