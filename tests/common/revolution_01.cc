@@ -10,10 +10,14 @@
  * are integrated with a Q2 mapping after 0 to 3 global refinements; the
  * relative errors must fall by at least a factor of 8 per refinement and
  * lie below 1e-5 at the finest level, and every cell must have a positive
- * Jacobian at every quadrature point.
+ * Jacobian at every quadrature point. (3) Both bodies revolved apart and
+ * joined by join_bodies (common/geometry/two_body_meshes.h) must converge
+ * in the same way: the join keeps the manifold ids of faces and lines and
+ * the manifolds themselves.
  */
 
 #include <common/geometry/revolution.h>
+#include <common/geometry/two_body_meshes.h>
 
 #include "../tests.h"
 
@@ -72,11 +76,9 @@ namespace
 
   void
   check(const std::string                         &name,
-        Triangulation<2>                          &meridian,
+        Triangulation<3>                          &tria,
         const std::vector<std::pair<int, double>> &exact)
   {
-    Triangulation<3> tria;
-    Common::Geometry::revolve_quarter(meridian, 4, 5, 10, tria);
     deallog << name << ": " << tria.n_active_cells() << " coarse cells"
             << std::endl;
     std::map<int, double> last_error;
@@ -109,41 +111,84 @@ namespace
 
 
 
+/** The meridian rectangle [0,2] x [0,3] mm, 2 x 3 cells; boundary ids 1
+ * bottom, 2 top, 3 side. */
+void
+make_rectangle(Triangulation<2> &meridian)
+{
+  GridGenerator::subdivided_hyper_rectangle(meridian,
+                                            {2u, 3u},
+                                            Point<2>(0., 0.),
+                                            Point<2>(2., 3.));
+  for (const auto &cell : meridian.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        {
+          const Point<2> c = cell->face(f)->center();
+          cell->face(f)->set_boundary_id(std::abs(c[1]) < 1e-12      ? 1 :
+                                         std::abs(c[1] - 3.) < 1e-12 ? 2 :
+                                         std::abs(c[0] - 2.) < 1e-12 ? 3 :
+                                                                       0);
+        }
+}
+
+
+
+/** The disc of radius 1 mm centred at r = 3 mm, boundary id @p id. */
+void
+make_disc(Triangulation<2> &meridian, const types::boundary_id id)
+{
+  GridGenerator::hyper_ball(meridian, Point<2>(3., 0.), 1.);
+  meridian.set_all_manifold_ids_on_boundary(0);
+  for (const auto &cell : meridian.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        cell->face(f)->set_boundary_id(id);
+}
+
+
+
 int
 main()
 {
   initlog(3);
   deallog << std::scientific;
+  const double pi = numbers::PI;
   {
     Triangulation<2> meridian;
-    GridGenerator::subdivided_hyper_rectangle(meridian,
-                                              {2u, 3u},
-                                              Point<2>(0., 0.),
-                                              Point<2>(2., 3.));
-    for (const auto &cell : meridian.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          {
-            const Point<2> c = cell->face(f)->center();
-            cell->face(f)->set_boundary_id(std::abs(c[1]) < 1e-12      ? 1 :
-                                           std::abs(c[1] - 3.) < 1e-12 ? 2 :
-                                           std::abs(c[0] - 2.) < 1e-12 ? 3 :
-                                                                         0);
-          }
-    const double pi = numbers::PI;
+    make_rectangle(meridian);
+    Triangulation<3> tria;
+    Common::Geometry::revolve_quarter(meridian, 4, 5, 10, tria);
     check("quarter cylinder",
-          meridian,
+          tria,
           {{-1, 3. * pi}, {3, 3. * pi}, {1, pi}, {4, 6.}, {5, 6.}});
   }
   {
     Triangulation<2> meridian;
-    GridGenerator::hyper_ball(meridian, Point<2>(3., 0.), 1.);
-    meridian.set_all_manifold_ids_on_boundary(0);
-    for (const auto &cell : meridian.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-          cell->face(f)->set_boundary_id(1);
-    const double pi = numbers::PI;
-    check("quarter torus", meridian, {{-1, 1.5 * pi * pi}, {1, 3. * pi * pi}});
+    make_disc(meridian, 1);
+    Triangulation<3> tria;
+    Common::Geometry::revolve_quarter(meridian, 4, 5, 10, tria);
+    check("quarter torus", tria, {{-1, 1.5 * pi * pi}, {1, 3. * pi * pi}});
+  }
+  {
+    // (3) Both bodies revolved apart (manifold ids from 10 and from 20)
+    // and joined by join_bodies, which must carry over the manifold ids
+    // of faces and lines and the manifolds themselves: the torus (boundary
+    // id 6) touches the cylinder along a circle only.
+    Triangulation<2> rectangle, disc;
+    make_rectangle(rectangle);
+    make_disc(disc, 6);
+    Triangulation<3> cylinder, torus, tria;
+    Common::Geometry::revolve_quarter(rectangle, 4, 5, 10, cylinder);
+    Common::Geometry::revolve_quarter(disc, 4, 5, 20, torus);
+    Common::Geometry::join_bodies<3>({&cylinder, &torus}, tria);
+    check("joined cylinder and torus",
+          tria,
+          {{-1, 3. * pi + 1.5 * pi * pi},
+           {3, 3. * pi},
+           {1, pi},
+           {6, 3. * pi * pi},
+           {4, 6. + pi},
+           {5, 6. + pi}});
   }
 }

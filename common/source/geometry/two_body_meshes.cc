@@ -1,8 +1,12 @@
 #include <common/geometry/two_body_meshes.h>
 
+#include <deal.II/grid/manifold.h>
+#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
 #include <limits>
+#include <map>
+#include <string>
 
 namespace Common
 {
@@ -51,6 +55,41 @@ namespace Common
             }
         }
       result.create_triangulation(vertices, cells, subcell_data);
+
+      // Coarse cells keep the order and the vertex order of the parts, so
+      // that their faces and lines correspond one to one.
+      auto target = result.begin_active();
+      std::map<types::manifold_id, const Triangulation<dim> *> owner;
+      for (const Triangulation<dim> *part : parts)
+        {
+          for (const auto &cell : part->active_cell_iterators())
+            {
+              target->set_manifold_id(cell->manifold_id());
+              for (const unsigned int f : cell->face_indices())
+                target->face(f)->set_manifold_id(cell->face(f)->manifold_id());
+              if constexpr (dim == 3)
+                for (const unsigned int l : cell->line_indices())
+                  target->line(l)->set_manifold_id(
+                    cell->line(l)->manifold_id());
+              ++target;
+            }
+          for (const types::manifold_id id : part->get_manifold_ids())
+            if (id != numbers::flat_manifold_id &&
+                dynamic_cast<const FlatManifold<dim> *>(
+                  &part->get_manifold(id)) == nullptr)
+              {
+                AssertThrow(
+                  dynamic_cast<const TransfiniteInterpolationManifold<dim> *>(
+                    &part->get_manifold(id)) == nullptr,
+                  ExcMessage("join_bodies: attach transfinite "
+                             "interpolation manifolds to the joined mesh."));
+                AssertThrow(owner.emplace(id, part).second,
+                            ExcMessage("join_bodies: two parts attach "
+                                       "manifolds to id " +
+                                       std::to_string(id) + "."));
+                result.set_manifold(id, part->get_manifold(id));
+              }
+        }
     }
 
 

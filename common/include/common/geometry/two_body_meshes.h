@@ -20,8 +20,12 @@ namespace Common
   {
     /**
      * @brief Join coarse meshes into @p result without merging any
-     * vertices. Cell material and manifold ids and boundary face manifold
-     * and boundary ids are kept (2D: boundary lines; 3D: boundary quads).
+     * vertices. Material ids, boundary ids and the manifold ids of every
+     * cell, face and (3D) line are kept, and so are the manifold objects
+     * attached to the parts (cloned), except flat ones; two parts must not
+     * attach manifolds to the same id. A manifold that refers to its
+     * part's triangulation (TransfiniteInterpolationManifold) must be
+     * attached to @p result afterwards instead.
      * @param[in] parts Coarse (unrefined) triangulations.
      */
     template <int dim>
