@@ -140,9 +140,10 @@ namespace Common
     private:
       /** 3D: integrate secondary face @p s against its primary faces by
        * polygon clipping; calls @p add_point(xi, JxW, m, eta_m) for every
-       * integration point. */
+       * integration point.
+       * @return The covered fraction of the face (1 if fully covered). */
       template <typename AddPoint>
-      void
+      double
       integrate_3d_segments(const unsigned int        s,
                             const ContactSearch<dim> &search,
                             const double              search_distance,
