@@ -9,6 +9,16 @@ namespace Punch3d
     prm.enter_subsection("Model");
     {
       prm.declare_entry(
+        "Dimension",
+        "axisymmetric",
+        Patterns::Selection("axisymmetric|3d quarter"),
+        "The model of the bodies of revolution: 'axisymmetric' (the meridian "
+        "section (r, z), 2D) or '3d quarter' (the same meridian meshes "
+        "revolved through 90 degrees into 3D solids, with symmetry "
+        "conditions on the planes x = 0 and z = 0; y is the axis). Results "
+        "are reported along r on the plane z = 0, and forces for the full "
+        "bodies (N).");
+      prm.declare_entry(
         "Punch",
         "elastic",
         Patterns::Selection("elastic|rigid"),
@@ -29,6 +39,7 @@ namespace Punch3d
   {
     prm.enter_subsection("Model");
     {
+      three_d     = (prm.get("Dimension") == "3d quarter");
       rigid_punch = (prm.get("Punch") == "rigid");
     }
     prm.leave_subsection();

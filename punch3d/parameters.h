@@ -76,6 +76,8 @@ namespace Punch3d
     void
     parse_parameters(ParameterHandler &prm);
 
+    /** The 3D quarter model instead of the axisymmetric one. */
+    bool three_d;
     /** The punch translates along the axis without deforming. */
     bool rigid_punch;
   };

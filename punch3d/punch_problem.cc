@@ -8,6 +8,7 @@
  */
 #include "punch_problem.h"
 
+#include <common/geometry/revolution.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
@@ -20,11 +21,13 @@
 #include <deal.II/base/function.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -50,11 +53,13 @@ namespace Punch3d
 
     /** Component @p c of the displacement at radius @p r, interpolated
      * linearly between the samples of @p surface (sorted by r). */
+    template <int dim>
     double
     surface_displacement_at(
-      const std::vector<Common::Physics::BoundaryDisplacementPoint<2>> &surface,
-      const double                                                      r,
-      const unsigned int                                                c)
+      const std::vector<Common::Physics::BoundaryDisplacementPoint<dim>>
+                        &surface,
+      const double       r,
+      const unsigned int c)
     {
       AssertThrow(!surface.empty(), ExcMessage("Empty surface profile."));
       if (r <= surface.front().position[0])
@@ -74,7 +79,8 @@ namespace Punch3d
 
 
 
-  PunchProblem::PunchProblem(const Parameters &parameters)
+  template <int dim>
+  PunchProblem<dim>::PunchProblem(const Parameters &parameters)
     : parameters(parameters)
     , mpi_communicator(MPI_COMM_WORLD)
     , console(parameters.output.verbosity, mpi_communicator)
@@ -83,167 +89,272 @@ namespace Punch3d
     , mapping(parameters.mesh.element_degree)
     , dof_handler(triangulation)
     , axis_dof(numbers::invalid_dof_index)
+    , loaded_area(0.)
   {}
 
 
 
-  // The meridian section (r, z): the foundation is [0, Rf] x [0, Hf]; the
-  // punch [0, a] x [Hf, Hf + Hp] with the corner at (a, Hf) rounded by a
-  // fillet of radius rho centred at (a - rho, Hf + rho). The punch's coarse
-  // mesh is built by hand: a strip along its flat face, two cells along
-  // the fillet, and two rows above; its fillet faces follow a spherical
-  // manifold and its interior a transfinite interpolation, so the arc is
-  // exact under refinement and represented by the element geometry of Q2.
-  void
-  PunchProblem::make_grid()
+  namespace
   {
-    const double     a   = parameters.geometry.punch_radius;
-    const double     Hp  = parameters.geometry.punch_height;
-    const double     rho = parameters.geometry.fillet_radius;
-    const double     Rf  = parameters.geometry.foundation_radius;
-    const double     Hf  = parameters.geometry.foundation_height;
-    const double     b   = a - rho;
-    const Point<dim> centre(b, Hf + rho);
+    /** Distance of a point from the axis: r = x in the axisymmetric model,
+     * sqrt(x^2 + z^2) in the 3D one (y is the axis). */
+    template <int dim>
+    double
+    radius(const Point<dim> &p)
+    {
+      return dim == 2 ? std::abs(p[0]) : std::hypot(p[0], p[dim - 1]);
+    }
 
-    Triangulation<dim> foundation;
-    const double       coarse_size = 0.5 * a;
-    GridGenerator::subdivided_hyper_rectangle(
-      foundation,
-      {std::max(1u, static_cast<unsigned int>(std::round(Rf / coarse_size))),
-       std::max(1u, static_cast<unsigned int>(std::round(Hf / coarse_size)))},
-      Point<dim>(0., 0.),
-      Point<dim>(Rf, Hf));
+    // The meridian section (r, z): the foundation is [0, Rf] x [0, Hf];
+    // the punch [0, a] x [Hf, Hf + Hp] with the corner at (a, Hf) rounded by
+    // a fillet of radius rho centred at (a - rho, Hf + rho). The punch's
+    // coarse mesh is built by hand: a strip along its flat face, two cells
+    // along the fillet, and two rows above. Its fillet faces get manifold
+    // id 0 (a circle about the fillet's centre, attached here) and, if
+    // @p transfinite_cells, its cells manifold id 1 (for a transfinite
+    // interpolation attached to the joined mesh). Boundary and material
+    // ids are set on both.
+    void
+    make_meridian_meshes(const GeometryParameters &geometry,
+                         const bool                transfinite_cells,
+                         Triangulation<2>         &foundation,
+                         Triangulation<2>         &punch)
+    {
+      const double   a   = geometry.punch_radius;
+      const double   Hp  = geometry.punch_height;
+      const double   rho = geometry.fillet_radius;
+      const double   Rf  = geometry.foundation_radius;
+      const double   Hf  = geometry.foundation_height;
+      const double   b   = a - rho;
+      const Point<2> centre(b, Hf + rho);
 
-    const double                  s        = std::sqrt(0.5);
-    const double                  z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
-    const std::vector<Point<dim>> vertices = {
-      {0., Hf},                          // 0: axis, contact face
-      {b, Hf},                           // 1: start of the fillet
-      {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
-      {a, Hf + rho},                     // 3: end of the fillet
-      {0., Hf + 2. * rho},               // 4
-      {b - 1.5 * rho, Hf + 2. * rho},    // 5
-      {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
-      {a, Hf + 2.5 * rho},               // 7
-      {0., z_mid},                       // 8
-      {b - 1.5 * rho, z_mid},            // 9
-      {b - 0.25 * rho, z_mid},           // 10
-      {a, z_mid},                        // 11
-      {0., Hf + Hp},                     // 12
-      {b - 1.5 * rho, Hf + Hp},          // 13
-      {b - 0.25 * rho, Hf + Hp},         // 14
-      {a, Hf + Hp}};                     // 15
-    const std::vector<std::vector<unsigned int>> cell_vertices = {
-      {0, 1, 4, 5},
-      {1, 2, 5, 6},
-      {2, 3, 6, 7},
-      {4, 5, 8, 9},
-      {5, 6, 9, 10},
-      {6, 7, 10, 11},
-      {8, 9, 12, 13},
-      {9, 10, 13, 14},
-      {10, 11, 14, 15}};
-    std::vector<CellData<dim>> cells(cell_vertices.size());
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      for (unsigned int v = 0; v < 4; ++v)
-        cells[c].vertices[v] = cell_vertices[c][v];
-    Triangulation<dim> punch;
-    punch.create_triangulation(vertices, cells, SubCellData());
+      const double coarse_size = 0.5 * a;
+      GridGenerator::subdivided_hyper_rectangle(
+        foundation,
+        {std::max(1u, static_cast<unsigned int>(std::round(Rf / coarse_size))),
+         std::max(1u, static_cast<unsigned int>(std::round(Hf / coarse_size)))},
+        Point<2>(0., 0.),
+        Point<2>(Rf, Hf));
 
-    for (const auto &cell : foundation.active_cell_iterators())
-      cell->set_material_id(MaterialIds::foundation);
-    for (const auto &cell : punch.active_cell_iterators())
-      cell->set_material_id(MaterialIds::punch);
-    Common::Geometry::join_bodies<dim>({&foundation, &punch}, triangulation);
+      const double                s        = std::sqrt(0.5);
+      const double                z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
+      const std::vector<Point<2>> vertices = {
+        {0., Hf},                          // 0: axis, contact face
+        {b, Hf},                           // 1: start of the fillet
+        {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
+        {a, Hf + rho},                     // 3: end of the fillet
+        {0., Hf + 2. * rho},               // 4
+        {b - 1.5 * rho, Hf + 2. * rho},    // 5
+        {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
+        {a, Hf + 2.5 * rho},               // 7
+        {0., z_mid},                       // 8
+        {b - 1.5 * rho, z_mid},            // 9
+        {b - 0.25 * rho, z_mid},           // 10
+        {a, z_mid},                        // 11
+        {0., Hf + Hp},                     // 12
+        {b - 1.5 * rho, Hf + Hp},          // 13
+        {b - 0.25 * rho, Hf + Hp},         // 14
+        {a, Hf + Hp}};                     // 15
+      const std::vector<std::vector<unsigned int>> cell_vertices = {
+        {0, 1, 4, 5},
+        {1, 2, 5, 6},
+        {2, 3, 6, 7},
+        {4, 5, 8, 9},
+        {5, 6, 9, 10},
+        {6, 7, 10, 11},
+        {8, 9, 12, 13},
+        {9, 10, 13, 14},
+        {10, 11, 14, 15}};
+      std::vector<CellData<2>> cells(cell_vertices.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int v = 0; v < 4; ++v)
+          cells[c].vertices[v] = cell_vertices[c][v];
+      punch.create_triangulation(vertices, cells, SubCellData());
 
-    const double tolerance = 1e-8 * a;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        const bool is_punch = cell->material_id() == MaterialIds::punch;
-        if (is_punch)
-          cell->set_all_manifold_ids(1);
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            {
-              const Point<dim> c = cell->face(f)->center();
-              if (!is_punch)
-                cell->face(f)->set_boundary_id(
+      const double tolerance = 1e-8 * a;
+      for (const auto &cell : foundation.active_cell_iterators())
+        {
+          cell->set_material_id(MaterialIds::foundation);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<2> c = face->center();
+                face->set_boundary_id(
                   std::abs(c[1]) < tolerance ? BoundaryIds::foundation_bottom :
                   std::abs(c[1] - Hf) < tolerance ?
                                                BoundaryIds::foundation_top :
                   std::abs(c[0]) < tolerance ? BoundaryIds::foundation_axis :
                                                BoundaryIds::foundation_side);
-              else if (std::abs(c[0]) < tolerance)
-                cell->face(f)->set_boundary_id(BoundaryIds::punch_axis);
-              else if (std::abs(c[1] - Hf - Hp) < tolerance)
-                cell->face(f)->set_boundary_id(BoundaryIds::punch_top);
-              else if (std::abs(c[0] - a) < tolerance)
-                cell->face(f)->set_boundary_id(BoundaryIds::punch_side);
-              else
-                {
-                  // The flat face and the fillet: the primary surface.
-                  cell->face(f)->set_boundary_id(BoundaryIds::punch_contact);
-                  if (c[0] > b + tolerance)
-                    cell->face(f)->set_manifold_id(0);
-                }
-            }
+              }
+        }
+      for (const auto &cell : punch.active_cell_iterators())
+        {
+          cell->set_material_id(MaterialIds::punch);
+          if (transfinite_cells)
+            cell->set_all_manifold_ids(1);
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<2> c = face->center();
+                if (std::abs(c[0]) < tolerance)
+                  face->set_boundary_id(BoundaryIds::punch_axis);
+                else if (std::abs(c[1] - Hf - Hp) < tolerance)
+                  face->set_boundary_id(BoundaryIds::punch_top);
+                else if (std::abs(c[0] - a) < tolerance)
+                  face->set_boundary_id(BoundaryIds::punch_side);
+                else
+                  {
+                    // The flat face and the fillet: the primary surface.
+                    face->set_boundary_id(BoundaryIds::punch_contact);
+                    if (c[0] > b + tolerance)
+                      face->set_manifold_id(0);
+                  }
+              }
+        }
+      punch.set_manifold(0, SphericalManifold<2>(centre));
+    }
+  } // namespace
+
+
+
+  // The axisymmetric model joins the meridian meshes; the fillet is a
+  // circle, the punch's interior a transfinite interpolation, so the arc
+  // is exact under refinement and represented by the element geometry of
+  // Q2. The 3D model revolves each meridian mesh into a quarter
+  // (common/geometry/revolution.h) and joins them; the fillet becomes a
+  // torus. Both are then graded toward the contact zone.
+  template <int dim>
+  void
+  PunchProblem<dim>::make_grid()
+  {
+    const auto  &geometry = parameters.geometry;
+    const double a        = geometry.punch_radius;
+    const double b        = a - geometry.fillet_radius;
+    const double Hf       = geometry.foundation_height;
+
+    Triangulation<2> foundation, punch;
+    make_meridian_meshes(geometry, dim == 2, foundation, punch);
+    if constexpr (dim == 2)
+      {
+        Common::Geometry::join_bodies<dim>({&foundation, &punch},
+                                           triangulation);
+        TransfiniteInterpolationManifold<dim> transfinite;
+        transfinite.initialize(triangulation);
+        triangulation.set_manifold(1, transfinite);
       }
-    triangulation.set_manifold(0, SphericalManifold<dim>(centre));
-    TransfiniteInterpolationManifold<dim> transfinite;
-    transfinite.initialize(triangulation);
-    triangulation.set_manifold(1, transfinite);
+    else
+      {
+        Triangulation<dim> foundation_3d, punch_3d;
+        Common::Geometry::revolve_quarter(foundation,
+                                          BoundaryIds::symmetry_z0,
+                                          BoundaryIds::symmetry_x0,
+                                          10,
+                                          foundation_3d);
+        Common::Geometry::revolve_quarter(punch,
+                                          BoundaryIds::symmetry_z0,
+                                          BoundaryIds::symmetry_x0,
+                                          20,
+                                          punch_3d);
+        Common::Geometry::join_bodies<dim>({&foundation_3d, &punch_3d},
+                                           triangulation);
+      }
 
     triangulation.refine_global(parameters.mesh.n_global_refinements);
-    // Graded toward the strip under the punch, then toward the contact
+    // Graded toward the band under the punch, then toward the contact
     // edge, from the start of the fillet to half its radius beyond it.
-    const auto strip = [Hf](const double r0, const double r1) {
+    const auto band = [Hf](const double r0, const double r1) {
       return [Hf, r0, r1](const Point<dim> &p) {
-        const double dr = std::max({0., r0 - p[0], p[0] - r1});
+        const double r  = radius(p);
+        const double dr = std::max({0., r0 - r, r - r1});
         return std::sqrt(dr * dr + (p[1] - Hf) * (p[1] - Hf));
       };
     };
     Common::Geometry::refine_toward<dim>(triangulation,
-                                         strip(0., a),
+                                         band(0., a),
                                          parameters.mesh.n_contact_refinements,
                                          parameters.mesh.grading_factor);
     Common::Geometry::refine_toward<dim>(triangulation,
-                                         strip(b, b + 0.5 * rho),
+                                         band(b,
+                                              b + 0.5 * geometry.fillet_radius),
                                          parameters.mesh.n_edge_refinements,
                                          parameters.mesh.grading_factor);
   }
 
 
 
+  template <int dim>
   void
-  PunchProblem::setup_system()
+  PunchProblem<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
 
     // Hanging nodes of the graded mesh, and homogeneous Dirichlet
-    // conditions on the Newton increment: fixed foundation bottom, u_r = 0
-    // on the axis of both bodies.
+    // conditions on the Newton increment: fixed foundation bottom; u_r = 0
+    // on the axis of both bodies (axisymmetric) or the normal component on
+    // the symmetry planes (3D).
+    std::vector<std::pair<unsigned int, std::vector<types::boundary_id>>>
+      symmetry;
+    if (dim == 2)
+      symmetry = {{0, {BoundaryIds::foundation_axis, BoundaryIds::punch_axis}}};
+    else
+      symmetry = {{dim - 1, {BoundaryIds::symmetry_z0}},
+                  {0, {BoundaryIds::symmetry_x0}}};
     Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
       {BoundaryIds::foundation_bottom},
-      {{0, {BoundaryIds::foundation_axis, BoundaryIds::punch_axis}}},
+      symmetry,
       constraints_dirichlet_and_hanging_nodes);
     // A rigid punch follows the axial DoF of its top vertex on the axis;
-    // u_r = 0 throughout.
-    const FEValuesExtractors::Scalar r_displacement(0);
+    // symmetry holds its other components at zero.
     if (parameters.model.rigid_punch)
-      Common::Physics::add_rigid_translation_constraints(
-        dof_handler,
-        MaterialIds::punch,
-        Point<dim>(0.,
-                   parameters.geometry.foundation_height +
-                     parameters.geometry.punch_height),
-        fe.component_mask(r_displacement),
-        constraints_dirichlet_and_hanging_nodes);
+      {
+        ComponentMask fixed(dim, true);
+        fixed.set(1, false);
+        Point<dim> top_on_axis;
+        top_on_axis[1] = parameters.geometry.foundation_height +
+                         parameters.geometry.punch_height;
+        Common::Physics::add_rigid_translation_constraints(
+          dof_handler,
+          MaterialIds::punch,
+          top_on_axis,
+          fixed,
+          constraints_dirichlet_and_hanging_nodes);
+      }
     constraints_dirichlet_and_hanging_nodes.close();
 
+    // The loaded area of the discrete punch top, for the full body: pi a^2
+    // up to round-off in the axisymmetric model; in 3D the area of the
+    // mapped quarter disc (Q1: its chords) times 4.
+    {
+      const QGauss<dim - 1> face_quadrature(fe.degree + 1);
+      FEFaceValues<dim>     fe_face_values(mapping,
+                                       fe,
+                                       face_quadrature,
+                                       update_JxW_values |
+                                         update_quadrature_points);
+      double                area = 0.;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                face->boundary_id() == BoundaryIds::punch_top)
+              {
+                fe_face_values.reinit(cell, face);
+                for (const unsigned int q :
+                     fe_face_values.quadrature_point_indices())
+                  area += fe_face_values.JxW(q) *
+                          Common::Physics::measure_factor(
+                            kinematics(),
+                            fe_face_values.quadrature_point(q));
+              }
+      loaded_area =
+        Utilities::MPI::sum(area, mpi_communicator) / model_fraction;
+    }
+
     // The axial DoF of the foundation's top vertex on the axis.
-    const Point<dim> axis_point(0., parameters.geometry.foundation_height);
+    Point<dim> axis_point;
+    axis_point[1] = parameters.geometry.foundation_height;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->material_id() == MaterialIds::foundation)
         for (const unsigned int v : cell->vertex_indices())
@@ -265,7 +376,7 @@ namespace Punch3d
       mapping,
       fe,
       materials,
-      Common::Physics::Kinematics::axisymmetric);
+      kinematics());
 
     contact_problem =
       std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
@@ -283,8 +394,9 @@ namespace Punch3d
 
 
   // The uniform pressure on the punch's top face, over the full ring.
+  template <int dim>
   Common::Problems::ExternalLoad
-  PunchProblem::external_load() const
+  PunchProblem<dim>::external_load() const
   {
     const double                   pressure = parameters.loading.pressure;
     const double                   a        = parameters.geometry.punch_radius;
@@ -292,25 +404,26 @@ namespace Punch3d
     load.add = [this, pressure](const double                     load_factor,
                                 const AffineConstraints<double> &c,
                                 TrilinosWrappers::MPI::Vector   &vector) {
-      Common::Physics::add_boundary_pressure(
-        mapping,
-        dof_handler,
-        BoundaryIds::punch_top,
-        load_factor * pressure,
-        Common::Physics::Kinematics::axisymmetric,
-        c,
-        vector);
+      Common::Physics::add_boundary_pressure(mapping,
+                                             dof_handler,
+                                             BoundaryIds::punch_top,
+                                             load_factor * pressure,
+                                             kinematics(),
+                                             c,
+                                             vector);
     };
+    // The load on the model: the full ring, or a quarter of it in 3D.
     load.magnitude = [pressure, a](const double load_factor) {
-      return load_factor * pressure * numbers::PI * a * a;
+      return load_factor * pressure * numbers::PI * a * a * model_fraction;
     };
     return load;
   }
 
 
 
+  template <int dim>
   Common::Analytic::RoundedPunchHalfSpace
-  PunchProblem::half_space_reference() const
+  PunchProblem<dim>::half_space_reference() const
   {
     const double a = parameters.geometry.punch_radius;
     return Common::Analytic::RoundedPunchHalfSpace(
@@ -326,8 +439,9 @@ namespace Punch3d
 
 
 
-  PunchProblem::Results
-  PunchProblem::evaluate_results(const double load_factor) const
+  template <int dim>
+  typename PunchProblem<dim>::Results
+  PunchProblem<dim>::evaluate_results(const double load_factor) const
   {
     const double a = parameters.geometry.punch_radius;
     Results      r;
@@ -337,13 +451,23 @@ namespace Punch3d
                                        contact_problem->displacement(),
                                        contact_problem->bulk_residual(),
                                        0);
+    // 3D: the nodes on the symmetry plane z = 0, where x = r and the
+    // profile's tangent (e_x) is radial.
+    if (dim == 3)
+      r.profile.erase(std::remove_if(r.profile.begin(),
+                                     r.profile.end(),
+                                     [a](const auto &p) {
+                                       return std::abs(p.position[dim - 1]) >
+                                              1e-8 * a;
+                                     }),
+                      r.profile.end());
     r.centre_pressure = r.peak_pressure = r.peak_radius = 0.;
     r.centre_radius = r.contact_radius = r.stick_radius = 0.;
     r.peak_tangential_traction                          = 0.;
     if (!r.profile.empty())
       {
-        // The Q2 vertex on the axis has no ring measure and is not paired:
-        // the innermost paired node stands for the centre.
+        // Axisymmetric Q2: the vertex on the axis has no ring measure and
+        // is not paired; the innermost paired node stands for the centre.
         const double r0   = r.profile.front().position[0];
         r.centre_pressure = r.profile.front().pressure;
         r.centre_radius   = r0;
@@ -364,10 +488,10 @@ namespace Punch3d
       }
     r.contact_force =
       -Common::Contact::total_contact_force(contact_problem->coupling(),
-                                            contact_problem->enforcement())[1];
-    r.applied_force =
-      load_factor * parameters.loading.pressure * numbers::PI * a * a;
-    const auto  &u = contact_problem->displacement();
+                                            contact_problem->enforcement())[1] /
+      model_fraction;
+    r.applied_force = load_factor * parameters.loading.pressure * loaded_area;
+    const auto  &u  = contact_problem->displacement();
     const double local =
       dof_handler.locally_owned_dofs().is_element(axis_dof) ? u(axis_dof) : 0.;
     r.axis_displacement = Utilities::MPI::sum(local, mpi_communicator);
@@ -376,8 +500,9 @@ namespace Punch3d
 
 
 
+  template <int dim>
   void
-  PunchProblem::postprocess_step(
+  PunchProblem<dim>::postprocess_step(
     const unsigned int                       step,
     const double                             load_factor,
     const Common::Solvers::NewtonStatistics &statistics)
@@ -411,8 +536,9 @@ namespace Punch3d
 
 
 
+  template <int dim>
   void
-  PunchProblem::output_results(
+  PunchProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
     using Common::IO::JsonObject;
@@ -429,12 +555,22 @@ namespace Punch3d
     // frictionless curve is not tabulated, and FE centre pressures differ
     // by less than their spread).
     const double p_centre_marc = fe_reference.front().pressure_marc;
-    // The foundation top, r from the axis to the foundation's rim.
-    const auto surface =
+    // The foundation top, r from the axis to the foundation's rim (3D: on
+    // the plane z = 0, where u_x = u_r).
+    auto surface =
       Common::Physics::boundary_displacements(mapping,
                                               dof_handler,
                                               contact_problem->displacement(),
                                               BoundaryIds::foundation_top);
+    if (dim == 3)
+      surface.erase(std::remove_if(surface.begin(),
+                                   surface.end(),
+                                   [this](const auto &p) {
+                                     return std::abs(p.position[dim - 1]) >
+                                            1e-8 *
+                                              parameters.geometry.punch_radius;
+                                   }),
+                    surface.end());
     // The largest inward (toward the axis) radial displacement.
     double ur_min = 0., ur_min_radius = 0.;
     for (const auto &p : surface)
@@ -537,7 +673,7 @@ namespace Punch3d
       {
         const std::string fe_label =
           "FE, Q" + std::to_string(parameters.mesh.element_degree) +
-          " axisymmetric";
+          (dim == 2 ? " axisymmetric" : " 3D quarter, plane z = 0");
         const std::string  fe_style = "linespoints pt 7 ps 0.5";
         std::ostringstream mu_stream;
         mu_stream << mu;
@@ -627,7 +763,7 @@ namespace Punch3d
 
     // summary.json
     JsonObject case_description;
-    case_description.set("model", "axisymmetric")
+    case_description.set("model", dim == 2 ? "axisymmetric" : "3d quarter")
       .set("punch", parameters.model.rigid_punch ? "rigid" : "elastic")
       .set("element_degree", parameters.mesh.element_degree)
       .set("global_refinements", parameters.mesh.n_global_refinements)
@@ -646,7 +782,7 @@ namespace Punch3d
     const double Hf               = parameters.geometry.foundation_height;
     const double a                = parameters.geometry.punch_radius;
     const auto   contact_distance = [Hf, a](const Point<dim> &p) {
-      return std::abs(p[1] - Hf) + std::max(0., p[0] - a);
+      return std::abs(p[1] - Hf) + std::max(0., radius(p) - a);
     };
     JsonObject mesh;
     mesh.set("n_active_cells", triangulation.n_active_cells())
@@ -732,12 +868,14 @@ namespace Punch3d
 
 
 
+  template <int dim>
   void
-  PunchProblem::run()
+  PunchProblem<dim>::run()
   {
     const auto start = std::chrono::steady_clock::now();
     console.stream() << "punch3d: rounded punch on a cylindrical foundation "
-                        "(axisymmetric"
+                        "("
+                     << (dim == 2 ? "axisymmetric" : "3D quarter model")
                      << (parameters.model.rigid_punch ? ", rigid punch)" : ")")
                      << std::endl;
     make_grid();
@@ -785,4 +923,8 @@ namespace Punch3d
     timings.set("total_s", Common::IO::seconds_since(start));
     output_results(stepping);
   }
+
+
+  template class PunchProblem<2>;
+  template class PunchProblem<3>;
 } // namespace Punch3d

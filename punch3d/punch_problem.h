@@ -40,6 +40,10 @@ namespace Punch3d
     constexpr types::boundary_id punch_top         = 6;
     constexpr types::boundary_id punch_axis        = 7;
     constexpr types::boundary_id punch_side        = 8;
+    /** 3D quarter model: the symmetry planes z = 0 and x = 0 of both
+     * bodies. */
+    constexpr types::boundary_id symmetry_z0 = 9;
+    constexpr types::boundary_id symmetry_x0 = 10;
   } // namespace BoundaryIds
 
   /** Material ids: one per body. */
@@ -50,14 +54,16 @@ namespace Punch3d
   } // namespace MaterialIds
 
   /**
-   * Axisymmetric model (r, z) of the rounded punch on the foundation, small
-   * strain, mortar contact with optional Coulomb friction.
+   * The rounded punch on the foundation, small strain, mortar contact with
+   * optional Coulomb friction: for dim = 2 the axisymmetric model (r, z),
+   * for dim = 3 the quarter model revolved from the same meridian meshes
+   * (y the axis, symmetry planes x = 0 and z = 0). Results are reported
+   * along r (on the plane z = 0 in 3D) and forces for the full bodies.
    */
+  template <int dim>
   class PunchProblem
   {
   public:
-    static constexpr int dim = 2;
-
     explicit PunchProblem(const Parameters &parameters);
 
     /** Build, solve all load steps and write the results. */
@@ -65,6 +71,18 @@ namespace Punch3d
     run();
 
   private:
+    /** Fraction of the bodies the model holds: 1 (axisymmetric, integrals
+     * over full rings) or 1/4 (3D quarter). */
+    static constexpr double model_fraction = dim == 2 ? 1. : 0.25;
+
+    /** Axisymmetric kinematics in 2D, the solid itself in 3D. */
+    static Common::Physics::Kinematics
+    kinematics()
+    {
+      return dim == 2 ? Common::Physics::Kinematics::axisymmetric :
+                        Common::Physics::Kinematics::cartesian;
+    }
+
     void
     make_grid();
     void
@@ -110,6 +128,8 @@ namespace Punch3d
     const MappingQ<dim>                                          mapping;
     DoFHandler<dim>                                              dof_handler;
     types::global_dof_index                                      axis_dof;
+    /** Area of the discrete punch top, full body (mm^2). */
+    double loaded_area;
     std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
 
     // Contact problem and its state
