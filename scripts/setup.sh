@@ -8,6 +8,7 @@ packages=(
   cmake g++ make   # build
   numdiff          # deal.II's test comparisons
   openmpi-bin      # mpirun for the parallel tests and runs
+  libopenblas0-serial  # optimised BLAS for MUMPS (3D runs), one thread per rank
   clang-format     # formatting check
   gnuplot-nox      # PNG plots
   python3          # study and report scripts

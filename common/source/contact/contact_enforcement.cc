@@ -513,13 +513,15 @@ namespace Common
               !locally_owned.is_element(
                 coupling.secondary_surface().node(j).dofs[0]))
             continue;
+          // A closed node is a spring for the whole iteration, also where
+          // its gap has turned positive (a touching node's weighted gap is
+          // positive when the surfaces curve apart): without it the first
+          // iteration of a body held only by contact is singular. The
+          // active-set update then opens the node; at convergence the
+          // set agrees with the sign of the gap and p = k max(0, -g).
           const double gap = coupling.weighted_gap(j, u) / row.weight;
-          const double p =
-            NormalContactLaw::penalty_pressure(gap,
-                                               parameters.penalty_stiffness);
-          const double dp_dgap =
-            NormalContactLaw::penalty_derivative(gap,
-                                                 parameters.penalty_stiffness);
+          const double dp_dgap = -parameters.penalty_stiffness;
+          const double p       = dp_dgap * gap;
 
           gap_gradient(coupling, j, row.normal, dofs, B);
           K.reinit(dofs.size(), dofs.size());
