@@ -519,7 +519,7 @@ namespace Common
           // iteration of a body held only by contact is singular. The
           // active-set update then opens the node; at convergence the
           // set agrees with the sign of the gap and p = k max(0, -g).
-          const double gap = coupling.weighted_gap(j, u) / row.weight;
+          const double gap     = coupling.weighted_gap(j, u) / row.weight;
           const double dp_dgap = -parameters.penalty_stiffness;
           const double p       = dp_dgap * gap;
 

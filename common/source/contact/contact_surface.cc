@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_poly.h>
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -21,7 +22,10 @@ namespace Common
                                         const Mapping<dim>      &mapping,
                                         const types::boundary_id boundary_id)
       : fe(dof_handler.get_fe().base_element(0))
+      , poly_space(nullptr)
     {
+      if (const auto *poly = dynamic_cast<const FE_Poly<dim> *>(&fe))
+        poly_space = &poly->get_poly_space();
       const FiniteElement<dim> &system_fe = dof_handler.get_fe();
       AssertThrow(system_fe.n_base_elements() == 1 &&
                     system_fe.element_multiplicity(0) == dim,
@@ -183,6 +187,26 @@ namespace Common
       const SurfaceFace<dim> &face = faces[f];
       const Point<dim>        p    = unit_cell_point(face.face_no, eta);
       values.resize(face.shape_indices.size());
+      if (poly_space != nullptr)
+        {
+          // All cell polynomials at once: the 1D factors are evaluated
+          // once instead of once per shape function.
+          thread_local std::vector<double>         all_values;
+          thread_local std::vector<Tensor<1, dim>> no_grads;
+          thread_local std::vector<Tensor<2, dim>> no_hessians;
+          thread_local std::vector<Tensor<3, dim>> no_third;
+          thread_local std::vector<Tensor<4, dim>> no_fourth;
+          all_values.resize(poly_space->n());
+          poly_space->evaluate(p,
+                               all_values,
+                               no_grads,
+                               no_hessians,
+                               no_third,
+                               no_fourth);
+          for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
+            values[a] = all_values[face.shape_indices[a]];
+          return;
+        }
       for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
         values[a] = fe.shape_value(face.shape_indices[a], p);
     }
@@ -201,6 +225,30 @@ namespace Common
       const Point<dim>        p    = unit_cell_point(face.face_no, eta);
       values.resize(face.shape_indices.size());
       derivatives.resize(face.shape_indices.size());
+      if (poly_space != nullptr)
+        {
+          thread_local std::vector<double>         all_values;
+          thread_local std::vector<Tensor<1, dim>> all_grads;
+          thread_local std::vector<Tensor<2, dim>> no_hessians;
+          thread_local std::vector<Tensor<3, dim>> no_third;
+          thread_local std::vector<Tensor<4, dim>> no_fourth;
+          all_values.resize(poly_space->n());
+          all_grads.resize(poly_space->n());
+          poly_space->evaluate(p,
+                               all_values,
+                               all_grads,
+                               no_hessians,
+                               no_third,
+                               no_fourth);
+          for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
+            {
+              values[a] = all_values[face.shape_indices[a]];
+              for (unsigned int k = 0; k < dim - 1; ++k)
+                derivatives[a][k] =
+                  all_grads[face.shape_indices[a]] * face_axes[face.face_no][k];
+            }
+          return;
+        }
       for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
         {
           values[a]                 = fe.shape_value(face.shape_indices[a], p);

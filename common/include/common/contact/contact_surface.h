@@ -10,6 +10,7 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/scalar_polynomials_base.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -156,8 +157,11 @@ namespace Common
 
     private:
       const dealii::FiniteElement<dim> &fe;
-      std::vector<SurfaceFace<dim>>     faces;
-      std::vector<SurfaceNode<dim>>     nodes;
+      /** The element's polynomial space (FE_Q), for evaluating all shape
+       * functions at once; null for other elements. */
+      const dealii::ScalarPolynomialsBase<dim> *poly_space;
+      std::vector<SurfaceFace<dim>>             faces;
+      std::vector<SurfaceNode<dim>>             nodes;
       /** Affine map of face coordinates into the unit cell, per face
        * number: origin and columns. */
       std::vector<dealii::Point<dim>>                          face_origin;
