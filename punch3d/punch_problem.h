@@ -123,13 +123,13 @@ namespace Punch3d
     Common::IO::Console console;
 
     // Discretisation
-    parallel::shared::Triangulation<dim>                         triangulation;
-    const FESystem<dim>                                          fe;
-    const MappingQ<dim>                                          mapping;
-    DoFHandler<dim>                                              dof_handler;
-    types::global_dof_index                                      axis_dof;
+    parallel::shared::Triangulation<dim> triangulation;
+    const FESystem<dim>                  fe;
+    const MappingQ<dim>                  mapping;
+    DoFHandler<dim>                      dof_handler;
+    types::global_dof_index              axis_dof;
     /** Area of the discrete punch top, full body (mm^2). */
-    double loaded_area;
+    double                                                       loaded_area;
     std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
 
     // Contact problem and its state
