@@ -17,6 +17,28 @@ namespace Common
   {
     using namespace dealii;
 
+    namespace
+    {
+      /** Every polynomial of @p space at the unit cell point @p p, and
+       * their gradients if @p gradients: the 1D factors of a tensor
+       * product space are evaluated once for all shape functions. */
+      template <int dim>
+      void
+      evaluate_all(const ScalarPolynomialsBase<dim> &space,
+                   const Point<dim>                 &p,
+                   std::vector<double>              &values,
+                   std::vector<Tensor<1, dim>>      &grads,
+                   const bool                        gradients)
+      {
+        thread_local std::vector<Tensor<2, dim>> no_hessians;
+        thread_local std::vector<Tensor<3, dim>> no_third;
+        thread_local std::vector<Tensor<4, dim>> no_fourth;
+        values.resize(space.n());
+        grads.resize(gradients ? space.n() : 0);
+        space.evaluate(p, values, grads, no_hessians, no_third, no_fourth);
+      }
+    } // namespace
+
     template <int dim>
     ContactSurface<dim>::ContactSurface(const DoFHandler<dim>   &dof_handler,
                                         const Mapping<dim>      &mapping,
@@ -189,20 +211,9 @@ namespace Common
       values.resize(face.shape_indices.size());
       if (poly_space != nullptr)
         {
-          // All cell polynomials at once: the 1D factors are evaluated
-          // once instead of once per shape function.
           thread_local std::vector<double>         all_values;
           thread_local std::vector<Tensor<1, dim>> no_grads;
-          thread_local std::vector<Tensor<2, dim>> no_hessians;
-          thread_local std::vector<Tensor<3, dim>> no_third;
-          thread_local std::vector<Tensor<4, dim>> no_fourth;
-          all_values.resize(poly_space->n());
-          poly_space->evaluate(p,
-                               all_values,
-                               no_grads,
-                               no_hessians,
-                               no_third,
-                               no_fourth);
+          evaluate_all(*poly_space, p, all_values, no_grads, false);
           for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
             values[a] = all_values[face.shape_indices[a]];
           return;
@@ -229,17 +240,7 @@ namespace Common
         {
           thread_local std::vector<double>         all_values;
           thread_local std::vector<Tensor<1, dim>> all_grads;
-          thread_local std::vector<Tensor<2, dim>> no_hessians;
-          thread_local std::vector<Tensor<3, dim>> no_third;
-          thread_local std::vector<Tensor<4, dim>> no_fourth;
-          all_values.resize(poly_space->n());
-          all_grads.resize(poly_space->n());
-          poly_space->evaluate(p,
-                               all_values,
-                               all_grads,
-                               no_hessians,
-                               no_third,
-                               no_fourth);
+          evaluate_all(*poly_space, p, all_values, all_grads, true);
           for (unsigned int a = 0; a < face.shape_indices.size(); ++a)
             {
               values[a] = all_values[face.shape_indices[a]];
