@@ -15,6 +15,7 @@
 #include <common/contact/contact_parameters.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/materials/linear_elastic.h>
+#include <common/physics/boundary_conditions.h>
 #include <common/physics/small_strain_elasticity.h>
 #include <common/problems/small_strain_contact_problem.h>
 #include <common/solvers/newton_solver.h>
@@ -265,15 +266,10 @@ namespace TwoBlockPatch
       if (dim == 3)
         planes.push_back(
           {1, {BoundaryIds::lower_symmetry_y, BoundaryIds::upper_symmetry_y}});
-      for (const auto &[component, ids] : planes)
-        for (const auto id : ids)
-          VectorTools::interpolate_boundary_values(
-            mapping,
-            dof_handler,
-            id,
-            Functions::ZeroFunction<dim>(dim),
-            constraints,
-            fe.component_mask(FEValuesExtractors::Scalar(component)));
+      Common::Physics::add_zero_component_constraints(mapping,
+                                                      dof_handler,
+                                                      planes,
+                                                      constraints);
     }
 
 

@@ -13,6 +13,30 @@ namespace Common
 
     template <int dim>
     void
+    add_zero_component_constraints(
+      const Mapping<dim>    &mapping,
+      const DoFHandler<dim> &dof_handler,
+      const std::vector<
+        std::pair<unsigned int, std::vector<types::boundary_id>>>
+                                &zero_components,
+      AffineConstraints<double> &constraints)
+    {
+      for (const auto &[component, ids] : zero_components)
+        for (const auto id : ids)
+          VectorTools::interpolate_boundary_values(
+            mapping,
+            dof_handler,
+            id,
+            Functions::ZeroFunction<dim>(dim),
+            constraints,
+            dof_handler.get_fe().component_mask(
+              FEValuesExtractors::Scalar(component)));
+    }
+
+
+
+    template <int dim>
+    void
     make_homogeneous_constraints(
       const Mapping<dim>                    &mapping,
       const DoFHandler<dim>                 &dof_handler,
@@ -32,18 +56,26 @@ namespace Common
                                                  Functions::ZeroFunction<dim>(
                                                    dim),
                                                  constraints);
-      for (const auto &[component, ids] : zero_components)
-        for (const auto id : ids)
-          VectorTools::interpolate_boundary_values(
-            mapping,
-            dof_handler,
-            id,
-            Functions::ZeroFunction<dim>(dim),
-            constraints,
-            dof_handler.get_fe().component_mask(
-              FEValuesExtractors::Scalar(component)));
+      add_zero_component_constraints(mapping,
+                                     dof_handler,
+                                     zero_components,
+                                     constraints);
     }
 
+    template void
+    add_zero_component_constraints(
+      const Mapping<2> &,
+      const DoFHandler<2> &,
+      const std::vector<
+        std::pair<unsigned int, std::vector<types::boundary_id>>> &,
+      AffineConstraints<double> &);
+    template void
+    add_zero_component_constraints(
+      const Mapping<3> &,
+      const DoFHandler<3> &,
+      const std::vector<
+        std::pair<unsigned int, std::vector<types::boundary_id>>> &,
+      AffineConstraints<double> &);
     template void
     make_homogeneous_constraints(
       const Mapping<2> &,

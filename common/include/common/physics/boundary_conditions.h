@@ -20,6 +20,22 @@ namespace Common
   namespace Physics
   {
     /**
+     * @brief Add to @p constraints, for each (c, ids) of
+     * @p zero_components, zero displacement component c on the boundaries
+     * ids (a symmetry line or plane normal to e_c, or the axis of an
+     * axisymmetric model for c = 0). Not closed here.
+     */
+    template <int dim>
+    void
+    add_zero_component_constraints(
+      const dealii::Mapping<dim>    &mapping,
+      const dealii::DoFHandler<dim> &dof_handler,
+      const std::vector<
+        std::pair<unsigned int, std::vector<dealii::types::boundary_id>>>
+                                        &zero_components,
+      dealii::AffineConstraints<double> &constraints);
+
+    /**
      * @brief Reset @p constraints (all DoFs stored) to the hanging-node
      * constraints of @p dof_handler, zero displacement on the boundaries
      * @p clamped, and, for each (c, ids) of @p zero_components, zero
