@@ -4,10 +4,11 @@
  * on the stick and slip states and nowhere else among the sampled points;
  * the stick/slip decision and the slip direction; and the generalised
  * derivative against central finite differences in 2D and 3D, at stick and
- * slip points away from the kink |t + c v| = s; the slip direction used
- * for the friction force of a slipping point and the rate at which it turns
- * with the slip increment, against central differences. Pass criterion for
- * the derivatives: relative difference below 1e-6.
+ * slip points away from the kink |t + c v| = s (pass: relative difference
+ * below 1e-6); and the Newton step of a slipping point in the form the
+ * condensed enforcement imposes (traction direction and turning stiffness)
+ * against the step the generalised derivative gives (pass: 1e-12 relative
+ * to the slip bound).
  */
 
 #include <common/contact/coulomb_law.h>
@@ -82,28 +83,41 @@ namespace
     return error / scale;
   }
 
-  /** Largest deviation of de = rate (I - e e^T) dv from central
-   * differences of the direction, perturbing each tangential component of
-   * v with t held, relative to rate; the direction must be a unit vector. */
+  /** Largest deviation, relative to s, of the Newton iterate
+   * t+ = t + dt (dt from C + C_t dt + C_v dv + C_s ds = 0 with the
+   * derivatives of complementarity_jacobian()) from the form
+   * slip_linearisation() states: t+.e = s + ds and
+   * t+.e_perp = k (v + dv).e_perp across e. */
   template <int dim>
   double
-  direction_derivative_error(const Tensor<1, dim> &t,
-                             const Tensor<1, dim> &v,
-                             const double          c)
+  slip_step_error(const Tensor<1, dim> &t,
+                  const Tensor<1, dim> &v,
+                  const double          s,
+                  const double          c,
+                  const Tensor<1, dim> &dv,
+                  const double          ds)
   {
-    const auto [e, rate] = Law::slip_direction_and_rate(t, v, c);
-    const double h       = 1e-7 * std::max(v.norm(), t.norm() / c);
-    double       error   = std::abs(e.norm() - 1.);
-    for (unsigned int k = 0; k < dim - 1; ++k)
+    if (Law::is_sticking(t, v, s, c))
+      return 1.; // the sample must slip
+    const auto            J      = Law::complementarity_jacobian(t, v, s, c);
+    const auto            step   = Law::slip_linearisation(t, v, s, c);
+    const Tensor<1, dim>  rhs    = -(Law::complementarity(t, v, s, c) +
+                                 J.d_slip_increment * dv + J.d_slip_bound * ds);
+    const Tensor<1, dim>  t_next = t + invert(J.d_traction) * rhs;
+    const Tensor<1, dim>  v_next = v + dv;
+    const Tensor<1, dim> &e      = step.direction;
+    double                error =
+      std::abs(e.norm() - 1.) + std::abs(t_next * e - (s + ds)) / s;
+    if (dim == 3)
       {
-        Tensor<1, dim> dv;
-        dv[k] = 1.;
-        const Tensor<1, dim> de =
-          (Law::slip_direction_and_rate(t, v + h * dv, c).first -
-           Law::slip_direction_and_rate(t, v - h * dv, c).first) /
-          (2. * h);
-        const Tensor<1, dim> expected = rate * (dv - (e * dv) * e);
-        error = std::max(error, (de - expected).norm() / rate);
+        Tensor<1, dim> normal;
+        normal[dim - 1] = 1.;
+        Tensor<1, dim> across;
+        if constexpr (dim == 3)
+          across = cross_product_3d(normal, e);
+        error += std::abs(t_next * across -
+                          step.turning_stiffness * (v_next * across)) /
+                 s;
       }
     return error;
   }
@@ -153,31 +167,28 @@ namespace
     deallog << "derivative in slip matches finite differences: "
             << pass_fail(e_slip < 1e-6) << std::endl;
 
-    // Slip direction and its rate: e = v/|v|, rate 1/|v| where v runs
-    // along the trial t + c v (here at 30 degrees to t in 3D); the trial
-    // direction with rate c/|t + c v| where v vanishes or opposes it.
+    // The Newton step of a slipping point in the form the enforcement
+    // imposes (slip_linearisation()), against the generalised derivative:
+    // a point far from convergence (v at 60 degrees to t in 3D), one whose
+    // slip runs against its traction, and one that has just started to
+    // slip (v = 0); at a converged slip state e = v/|v| and k = s/|v|.
     {
-      const Tensor<1, dim> t = tangential<dim>(20., 10.);
-      const Tensor<1, dim> v = tangential<dim>(2e-3, 3e-3);
-      const auto [e, rate]   = Law::slip_direction_and_rate(t, v, c);
-      const bool along_v     = (e - v / v.norm()).norm() < 1e-14 &&
-                           std::abs(rate * v.norm() - 1.) < 1e-14;
-      const Tensor<1, dim> v_back = -1e-4 * t / t.norm();
-      const auto [e_trial, rate_trial] =
-        Law::slip_direction_and_rate(t, v_back, c);
-      const Tensor<1, dim> trial = t + c * v_back;
-      const bool           along_trial =
-        (e_trial - trial / trial.norm()).norm() < 1e-14 &&
-        std::abs(rate_trial * trial.norm() / c - 1.) < 1e-14;
-      const double e_rate = std::max(direction_derivative_error(t, v, c),
-                                     direction_derivative_error(t, v_back, c));
-      deallog << "slip direction along v (v along the trial), rate 1/|v|: "
-              << pass_fail(along_v) << std::endl;
-      deallog << "slip direction along the trial (v against it), rate "
-                 "c/|t + c v|: "
-              << pass_fail(along_trial) << std::endl;
-      deallog << "direction derivative matches finite differences: "
-              << pass_fail(e_rate < 1e-6) << std::endl;
+      const Tensor<1, dim> t     = tangential<dim>(20., 10.);
+      const Tensor<1, dim> v     = tangential<dim>(-1e-3, 3e-3);
+      const Tensor<1, dim> dv    = tangential<dim>(4e-4, -7e-4);
+      const Tensor<1, dim> v_old = -1e-4 * t / t.norm();
+      const double         e_step =
+        std::max({slip_step_error(t, v, 0.2 * s, c, dv, 2.),
+                  slip_step_error(t, v_old, 0.2 * s, c, dv, -1.),
+                  slip_step_error(2. * t, zero, s, c, dv, 0.5)});
+      const auto converged = Law::slip_linearisation(t_slip, v_slip, s, c);
+      const bool at_solution =
+        (converged.direction - v_slip / v_slip.norm()).norm() < 1e-14 &&
+        std::abs(converged.turning_stiffness * v_slip.norm() / s - 1.) < 1e-12;
+      deallog << "slip step matches the generalised Newton step: "
+              << pass_fail(e_step < 1e-12) << std::endl;
+      deallog << "at a slip state e = v/|v| and k = s/|v|: "
+              << pass_fail(at_solution) << std::endl;
     }
 
     // In 2D the slip derivative is the active-set form t = s e.

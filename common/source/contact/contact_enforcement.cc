@@ -53,6 +53,46 @@ namespace Common
 
 
 
+      /** Unit vector along coordinate direction d. */
+      template <int dim>
+      Tensor<1, dim>
+      unit_vector(const unsigned int d)
+      {
+        Tensor<1, dim> e;
+        e[d] = 1.;
+        return e;
+      }
+
+
+
+      /** An orthonormal basis of the plane (line in 2D) normal to the unit
+       * vector n; in 2D the tangent (n_1, -n_0). */
+      template <int dim>
+      std::vector<Tensor<1, dim>>
+      tangent_basis(const Tensor<1, dim> &n)
+      {
+        std::vector<Tensor<1, dim>> basis;
+        if constexpr (dim == 2)
+          basis.push_back(Tensor<1, dim>({n[1], -n[0]}));
+        else
+          {
+            // The coordinate direction least aligned with n, made
+            // orthogonal to it, and the cross product.
+            unsigned int d = 0;
+            for (unsigned int e = 1; e < dim; ++e)
+              if (std::abs(n[e]) < std::abs(n[d]))
+                d = e;
+            Tensor<1, dim> t1 = unit_vector<dim>(d);
+            t1 -= (t1 * n) * n;
+            t1 /= t1.norm();
+            basis.push_back(t1);
+            basis.push_back(cross_product_3d(n, t1));
+          }
+        return basis;
+      }
+
+
+
       /** Tangential part \f$(I - n n^T)x\f$. */
       template <int dim>
       Tensor<1, dim>
@@ -96,12 +136,14 @@ namespace Common
       const unsigned int n = coupling.n_rows();
       state.status.assign(n, PointStatus::open);
       state.slip_direction.assign(n, Tensor<1, dim>());
-      state.slip_direction_rate.assign(n, 0.);
+      state.slip_turning_stiffness.assign(n, 0.);
       state.pressures.assign(n, 0.);
       state.tangential_tractions.assign(n, Tensor<1, dim>());
       accepted_state = state;
       accepted_relative_displacement.assign(n, Tensor<1, dim>());
-      tangentially_free.assign(n, true);
+      free_tangents.resize(n);
+      for (unsigned int j = 0; j < n; ++j)
+        free_tangents[j] = tangent_basis(coupling.row(j).normal);
       normally_free.assign(n, true);
     }
 
@@ -114,11 +156,36 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
-          unsigned int n_fixed = 0;
-          for (const auto dof : coupling.secondary_surface().node(j).dofs)
-            n_fixed += constraints.is_constrained(dof);
-          tangentially_free[j] = (n_fixed == 0);
-          normally_free[j]     = (n_fixed < dim);
+          const Tensor<1, dim> &normal = coupling.row(j).normal;
+          const auto &dofs = coupling.secondary_surface().node(j).dofs;
+          // The tangent directions w with w_d = 0 for every fixed d: the
+          // tangent plane minus the span of the fixed unit vectors'
+          // tangential parts (Gram-Schmidt).
+          std::vector<Tensor<1, dim>> fixed;
+          unsigned int                n_fixed = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (constraints.is_constrained(dofs[d]))
+              {
+                ++n_fixed;
+                Tensor<1, dim> w = unit_vector<dim>(d);
+                w                = tangential_part(w, normal);
+                for (const auto &q : fixed)
+                  w -= (w * q) * q;
+                if (w.norm() > 1e-8)
+                  fixed.push_back(w / w.norm());
+              }
+          std::vector<Tensor<1, dim>> free;
+          for (Tensor<1, dim> b : tangent_basis(normal))
+            {
+              for (const auto &q : fixed)
+                b -= (b * q) * q;
+              for (const auto &q : free)
+                b -= (b * q) * q;
+              if (b.norm() > 1e-8)
+                free.push_back(b / b.norm());
+            }
+          free_tangents[j] = free;
+          normally_free[j] = (n_fixed < dim);
         }
     }
 
@@ -197,8 +264,9 @@ namespace Common
           if (state.status[j] != PointStatus::open)
             {
               const Tensor<1, dim> increment =
-                tangential_part(relative - accepted_relative_displacement[j],
-                                coupling.row(j).normal);
+                free_tangential_part(j,
+                                     relative -
+                                       accepted_relative_displacement[j]);
               double fraction = 1.;
               if (accepted_state.status[j] == PointStatus::open)
                 {
@@ -369,10 +437,69 @@ namespace Common
               continue;
             }
 
-          // Normal condition only (slip, or a stick node with a component
-          // fixed otherwise, e.g. on a symmetry plane): solve the
-          // linearised condition for the free component with the largest
-          // normal share.
+          // A stick node with some DoFs fixed (a symmetry plane): the
+          // normal condition and stick along the free tangents, A du_j =
+          // A (sum_k M_jk du_k / D + target) with the rows of A the normal
+          // and the free tangents, solved for the free components F:
+          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target) - A_X du_X).
+          std::vector<unsigned int> free_components, fixed_components;
+          for (unsigned int d = 0; d < dim; ++d)
+            (constraints.is_constrained(node.dofs[d]) ? fixed_components :
+                                                        free_components)
+              .push_back(d);
+          const unsigned int m = 1 + free_tangents[j].size();
+          if (state.status[j] == PointStatus::stick &&
+              !free_tangents[j].empty() && free_components.size() == m)
+            {
+              FullMatrix<double> A(m, dim), A_F(m, m), A_F_inverse(m, m);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  A(0, d) = row.normal[d];
+                  for (unsigned int i = 1; i < m; ++i)
+                    A(i, d) = free_tangents[j][i - 1][d];
+                }
+              for (unsigned int i = 0; i < m; ++i)
+                for (unsigned int f = 0; f < m; ++f)
+                  A_F(i, f) = A(i, free_components[f]);
+              if (std::abs(A_F.determinant()) > 1e-6)
+                {
+                  A_F_inverse.invert(A_F);
+                  FullMatrix<double> S(m, dim); // A_F^-1 A
+                  A_F_inverse.mmult(S, A);
+                  const Tensor<1, dim> target =
+                    coupling.weighted_gap(j, u) / row.weight * row.normal +
+                    slip_increment(j, u);
+                  for (unsigned int f = 0; f < m; ++f)
+                    {
+                      std::vector<std::pair<types::global_dof_index, double>>
+                             entries;
+                      double inhomogeneity = 0.;
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          inhomogeneity += S(f, d) * target[d];
+                          if (std::abs(S(f, d)) < 1e-14)
+                            continue;
+                          for (const auto &[k, M] : row.primary_weights)
+                            if (std::abs(M) > 1e-14 * row.weight)
+                              entries.emplace_back(
+                                coupling.primary_surface().node(k).dofs[d],
+                                S(f, d) * M / row.weight);
+                        }
+                      for (const unsigned int x : fixed_components)
+                        if (std::abs(S(f, x)) > 1e-14)
+                          entries.emplace_back(node.dofs[x], -S(f, x));
+                      const auto dof = node.dofs[free_components[f]];
+                      constraints.add_line(dof);
+                      constraints.add_entries(dof, entries);
+                      constraints.set_inhomogeneity(dof, inhomogeneity);
+                    }
+                  continue;
+                }
+            }
+
+          // Normal condition only (slip, or a node without a free tangent
+          // direction): solve the linearised condition for the free
+          // component with the largest normal share.
           int c = -1;
           for (unsigned int d = 0; d < dim; ++d)
             if (!constraints.is_constrained(node.dofs[d]) &&
@@ -407,6 +534,7 @@ namespace Common
     void
     ContactEnforcement<dim>::assemble_friction(
       const AffineConstraints<double> &constraints,
+      const VectorType                &u,
       const MatrixType                &bulk_matrix,
       const VectorType                &bulk_residual,
       const IndexSet                  &locally_owned,
@@ -422,7 +550,8 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const auto &node = coupling.secondary_surface().node(j);
-          if (state.status[j] != PointStatus::slip || !tangentially_free[j] ||
+          if (state.status[j] != PointStatus::slip ||
+              free_tangents[j].empty() ||
               !locally_owned.is_element(node.dofs[0]))
             continue;
           const MortarRow<dim> &row = coupling.row(j);
@@ -466,27 +595,29 @@ namespace Common
                     K(a, b) = -mu / row.weight * B(a) * it->second;
                 }
             }
-          // In 3D the slip direction e turns with the slip increment v:
-          // de = rate (I - e e^T) dv (CoulombLaw::slip_direction_and_rate),
-          // which only has a component along t2 = n x e; with
-          // t2 . dv = B_t2 . du / D the tangent gains
-          // mu lambda rate / D B_t2 B_t2^T. (In 2D the tangent line holds e
-          // alone and the term vanishes.)
-          if (dim == 3 && state.slip_direction_rate[j] > 0. && pressure > 0.)
-            {
-              Tensor<1, dim> t2;
-              if constexpr (dim == 3)
-                t2 = cross_product_3d(row.normal, e);
-              t2 /= t2.norm();
-              std::vector<types::global_dof_index> t2_dofs;
-              Vector<double>                       B_t2;
-              gap_gradient(coupling, j, t2, t2_dofs, B_t2);
-              const double factor =
-                mu * pressure * state.slip_direction_rate[j] / row.weight;
-              for (unsigned int a = 0; a < B_t2.size(); ++a)
-                for (unsigned int b = 0; b < B_t2.size(); ++b)
-                  K(a, b) += factor * B_t2(a) * B_t2(b);
-            }
+          // In 3D the traction turns: across e, along t2 = n x e, the
+          // traction of the next iterate is k v.t2 (slip_linearisation()),
+          // a force -k (v.t2) B_t2 with v.t2 = B_t2 . u / D + const and
+          // tangent (k/D) B_t2 B_t2^T. (In 2D the tangent line holds e
+          // alone.)
+          if constexpr (dim == 3)
+            if (state.slip_turning_stiffness[j] > 0.)
+              {
+                Tensor<1, dim> t2 = cross_product_3d(row.normal, e);
+                t2 /= t2.norm();
+                std::vector<types::global_dof_index> t2_dofs;
+                Vector<double>                       B_t2;
+                gap_gradient(coupling, j, t2, t2_dofs, B_t2);
+                Assert(t2_dofs == B_dofs, ExcInternalError());
+                const double k           = state.slip_turning_stiffness[j];
+                const double traction_t2 = k * (slip_increment(j, u) * t2);
+                for (unsigned int a = 0; a < B_t2.size(); ++a)
+                  {
+                    r(a) -= traction_t2 * B_t2(a);
+                    for (unsigned int b = 0; b < B_t2.size(); ++b)
+                      K(a, b) += k / row.weight * B_t2(a) * B_t2(b);
+                  }
+              }
           constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
         }
     }
@@ -568,7 +699,7 @@ namespace Common
               state.pressures[j] = (r * row.normal) / row.weight;
               if (has_friction())
                 state.tangential_tractions[j] =
-                  -tangential_part(r, row.normal) / row.weight;
+                  -free_tangential_part(j, r) / row.weight;
             }
         }
     }
@@ -606,9 +737,22 @@ namespace Common
     ContactEnforcement<dim>::slip_increment(const unsigned int j,
                                             const VectorType  &u) const
     {
-      return tangential_part(coupling.relative_displacement(j, u) -
-                               accepted_relative_displacement[j],
-                             coupling.row(j).normal);
+      return free_tangential_part(j,
+                                  coupling.relative_displacement(j, u) -
+                                    accepted_relative_displacement[j]);
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    ContactEnforcement<dim>::free_tangential_part(const unsigned int    j,
+                                                  const Tensor<1, dim> &x) const
+    {
+      Tensor<1, dim> result;
+      for (const auto &b : free_tangents[j])
+        result += (x * b) * b;
+      return result;
     }
 
 
@@ -626,7 +770,7 @@ namespace Common
                    NormalContactLaw::complementarity(state.pressures[j], gap, c) :
                    0.;
       Tensor<1, dim> C_t;
-      if (has_friction() && tangentially_free[j])
+      if (has_friction() && !free_tangents[j].empty())
         C_t =
           CoulombLaw::complementarity(state.tangential_tractions[j],
                                       slip_increment(j, u),
@@ -658,15 +802,13 @@ namespace Common
       for (unsigned int j = 0; j < s.status.size(); ++j)
         {
           result[j] = static_cast<int>(s.status[j]);
-          // In 2D the slip direction is one of two senses of the tangent.
-          if (dim == 2 && s.status[j] == PointStatus::slip &&
+          // Along a single free tangent (2D, or a symmetry plane in 3D)
+          // the slip direction is one of its two senses.
+          if (free_tangents[j].size() == 1 &&
+              s.status[j] == PointStatus::slip &&
               s.slip_direction[j].norm() > 0.)
-            {
-              const Tensor<1, dim> &n = coupling.row(j).normal;
-              const double          sense =
-                s.slip_direction[j][0] * n[1] - s.slip_direction[j][1] * n[0];
-              result[j] += (sense < 0. ? 10 : 0);
-            }
+            result[j] +=
+              (s.slip_direction[j] * free_tangents[j][0] < 0. ? 10 : 0);
         }
       return result;
     }
@@ -742,8 +884,8 @@ namespace Common
       State proposed = state;
       for (unsigned int j = 0; j < n; ++j)
         {
-          proposed.slip_direction[j]      = Tensor<1, dim>();
-          proposed.slip_direction_rate[j] = 0.;
+          proposed.slip_direction[j]         = Tensor<1, dim>();
+          proposed.slip_turning_stiffness[j] = 0.;
           if (!next[j])
             {
               proposed.status[j] = PointStatus::open;
@@ -754,7 +896,7 @@ namespace Common
               proposed.status[j] = PointStatus::slip;
               continue;
             }
-          if (!tangentially_free[j])
+          if (free_tangents[j].empty())
             {
               proposed.status[j] = PointStatus::stick;
               continue;
@@ -776,12 +918,19 @@ namespace Common
           else
             {
               proposed.status[j] = PointStatus::slip;
-              std::tie(proposed.slip_direction[j],
-                       proposed.slip_direction_rate[j]) =
-                CoulombLaw::slip_direction_and_rate(
-                  state.tangential_tractions[j],
-                  v,
-                  c_t);
+              const auto step =
+                CoulombLaw::slip_linearisation(state.tangential_tractions[j],
+                                               v,
+                                               bound,
+                                               c_t);
+              proposed.slip_direction[j] = step.direction;
+              // Bounded, so that a point just past the stick limit does not
+              // make the tangent ill-conditioned; the converged state does
+              // not depend on k.
+              // Only a node free to slip in the whole tangent plane turns.
+              if (free_tangents[j].size() == dim - 1)
+                proposed.slip_turning_stiffness[j] =
+                  std::min(step.turning_stiffness, 1e3 * c_t);
             }
         }
 
@@ -811,13 +960,14 @@ namespace Common
               single[j]               = next_codes[j];
               if (!seen(single))
                 {
-                  State one                  = state;
-                  one.status[j]              = proposed.status[j];
-                  one.slip_direction[j]      = proposed.slip_direction[j];
-                  one.slip_direction_rate[j] = proposed.slip_direction_rate[j];
-                  proposed                   = one;
-                  next_codes                 = single;
-                  cycling                    = false;
+                  State one             = state;
+                  one.status[j]         = proposed.status[j];
+                  one.slip_direction[j] = proposed.slip_direction[j];
+                  one.slip_turning_stiffness[j] =
+                    proposed.slip_turning_stiffness[j];
+                  proposed   = one;
+                  next_codes = single;
+                  cycling    = false;
                   break;
                 }
             }
@@ -827,9 +977,9 @@ namespace Common
       for (unsigned int j = 0; j < n; ++j)
         n_changed += (next_codes[j] != current_codes[j]);
       // In 3D a slip direction may turn without changing the code.
-      state.status              = proposed.status;
-      state.slip_direction      = proposed.slip_direction;
-      state.slip_direction_rate = proposed.slip_direction_rate;
+      state.status                 = proposed.status;
+      state.slip_direction         = proposed.slip_direction;
+      state.slip_turning_stiffness = proposed.slip_turning_stiffness;
       history.push_back(next_codes);
       return n_changed;
     }

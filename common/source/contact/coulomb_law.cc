@@ -64,19 +64,21 @@ namespace Common
 
 
       template <int dim>
-      std::pair<Tensor<1, dim>, double>
-      slip_direction_and_rate(const Tensor<1, dim> &traction,
-                              const Tensor<1, dim> &slip_increment,
-                              const double          c)
+      SlipLinearisation<dim>
+      slip_linearisation(const Tensor<1, dim> &traction,
+                         const Tensor<1, dim> &slip_increment,
+                         const double          slip_bound,
+                         const double          c)
       {
-        const Tensor<1, dim> trial      = traction + c * slip_increment;
-        const double         trial_norm = trial.norm();
-        const double         v_norm     = slip_increment.norm();
-        if (v_norm > 0. && slip_increment * trial > 0.)
-          return {slip_increment / v_norm, 1. / v_norm};
-        if (trial_norm > 0.)
-          return {trial / trial_norm, c / trial_norm};
-        return {Tensor<1, dim>(), 0.};
+        SlipLinearisation<dim> result;
+        const Tensor<1, dim>   trial = traction + c * slip_increment;
+        const double           norm  = trial.norm();
+        const double           s     = std::max(0., slip_bound);
+        if (norm > 0.)
+          result.direction = trial / norm;
+        if (norm > s)
+          result.turning_stiffness = c * s / (norm - s);
+        return result;
       }
 
 
@@ -106,27 +108,27 @@ namespace Common
         return jacobian;
       }
 
-#define INSTANTIATE(dim)                                                  \
-  template Tensor<1, dim> project_onto_disc(const Tensor<1, dim> &,       \
-                                            const double);                \
-  template Tensor<1, dim> complementarity(const Tensor<1, dim> &,         \
-                                          const Tensor<1, dim> &,         \
-                                          const double,                   \
-                                          const double);                  \
-  template bool           is_sticking(const Tensor<1, dim> &,             \
-                                      const Tensor<1, dim> &,             \
-                                      const double,                       \
-                                      const double);                      \
-  template Tensor<1, dim> slip_direction(const Tensor<1, dim> &,          \
-                                         const Tensor<1, dim> &,          \
-                                         const double);                   \
-  template std::pair<Tensor<1, dim>, double> slip_direction_and_rate(     \
-    const Tensor<1, dim> &,                                               \
-    const Tensor<1, dim> &,                                               \
-    const double);                                                        \
-  template Jacobian<dim> complementarity_jacobian(const Tensor<1, dim> &, \
-                                                  const Tensor<1, dim> &, \
-                                                  const double,           \
+#define INSTANTIATE(dim)                                                     \
+  template Tensor<1, dim>         project_onto_disc(const Tensor<1, dim> &,  \
+                                                    const double);           \
+  template Tensor<1, dim>         complementarity(const Tensor<1, dim> &,    \
+                                                  const Tensor<1, dim> &,    \
+                                                  const double,              \
+                                                  const double);             \
+  template bool                   is_sticking(const Tensor<1, dim> &,        \
+                                              const Tensor<1, dim> &,        \
+                                              const double,                  \
+                                              const double);                 \
+  template Tensor<1, dim>         slip_direction(const Tensor<1, dim> &,     \
+                                                 const Tensor<1, dim> &,     \
+                                                 const double);              \
+  template SlipLinearisation<dim> slip_linearisation(const Tensor<1, dim> &, \
+                                                     const Tensor<1, dim> &, \
+                                                     const double,           \
+                                                     const double);          \
+  template Jacobian<dim> complementarity_jacobian(const Tensor<1, dim> &,    \
+                                                  const Tensor<1, dim> &,    \
+                                                  const double,              \
                                                   const double);
       INSTANTIATE(2)
       INSTANTIATE(3)

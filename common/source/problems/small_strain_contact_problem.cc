@@ -170,6 +170,7 @@ namespace Common
                                               system_matrix,
                                               system_rhs);
       contact_enforcement->assemble_friction(constraints,
+                                             solution,
                                              bulk_matrix,
                                              residual_vector,
                                              locally_owned_dofs,

@@ -102,11 +102,13 @@ namespace Common
 
       /**
        * @brief Mark the secondary nodes with a DoF fixed by @p constraints
-       * (Dirichlet conditions, e.g. a symmetry plane, or hanging nodes):
-       * their tangential motion is prescribed, so friction does not act
-       * there and a closed one counts as sticking; a node with every DoF
-       * fixed cannot take the normal condition either. Call once, after
-       * the constructor.
+       * (Dirichlet conditions, e.g. a symmetry plane, or hanging nodes).
+       * Friction acts only along the tangent directions orthogonal to the
+       * fixed DoFs: on a symmetry plane of a 3D model, along the line
+       * where plane and contact surface meet; a node without such a
+       * direction (on an axis, or with every DoF fixed) counts as sticking
+       * when closed, and one with every DoF fixed cannot take the normal
+       * condition either. Call once, after the constructor.
        */
       void
       mark_constrained_nodes(
@@ -162,10 +164,13 @@ namespace Common
 
       /**
        * @brief Coulomb friction: add the tangential traction
-       * \f$\mu\lambda_j(u)e_j\f$ of every slipping node whose first DoF is
-       * in @p locally_owned, and its linearisation, which couples the
-       * node's bulk stiffness row into its primary partners' rows. Matrix and
-       * vector are not compressed here.
+       * \f$\mu\lambda_j(u)e_j + k_j (v_j(u)\cdot e_{\perp j}) e_{\perp j}\f$
+       * of every slipping node whose first DoF is in @p locally_owned, and
+       * its linearisation, which couples the node's bulk stiffness row into
+       * its primary partners' rows (CoulombLaw::slip_linearisation(); the
+       * second term exists in 3D only and vanishes at convergence). Matrix
+       * and vector are not compressed here.
+       * @param[in] u Current displacement (ghosted).
        * @param[in] bulk_matrix Tangent of the bulk residual, condensed with
        * the Dirichlet and hanging-node constraints only; supplies the rows
        * of the slipping nodes (which must be locally owned).
@@ -174,6 +179,7 @@ namespace Common
        */
       void
       assemble_friction(const dealii::AffineConstraints<double> &constraints,
+                        const VectorType                        &u,
                         const MatrixType                        &bulk_matrix,
                         const VectorType                        &bulk_residual,
                         const dealii::IndexSet                  &locally_owned,
@@ -306,9 +312,10 @@ namespace Common
       {
         std::vector<PointStatus>            status;
         std::vector<dealii::Tensor<1, dim>> slip_direction;
-        /** Rate |de/dv| at which the slip direction turns with the slip
-         * increment (1/mm); 0 where the node does not slip. */
-        std::vector<double>                 slip_direction_rate;
+        /** Turning stiffness of a slipping node (MPa/mm,
+         * CoulombLaw::slip_linearisation()); 0 where the node does not
+         * slip. */
+        std::vector<double>                 slip_turning_stiffness;
         std::vector<double>                 pressures;
         std::vector<dealii::Tensor<1, dim>> tangential_tractions;
       };
@@ -323,6 +330,11 @@ namespace Common
       std::pair<double, dealii::Tensor<1, dim>>
       complementarity(const unsigned int j, const VectorType &u) const;
 
+      /** Part of @p x along the free tangent directions of node j. */
+      dealii::Tensor<1, dim>
+      free_tangential_part(const unsigned int            j,
+                           const dealii::Tensor<1, dim> &x) const;
+
       /** Weighted violation of node j (N), to rank nodes when cycling. */
       double
       violation(const unsigned int j, const VectorType &u) const;
@@ -335,8 +347,10 @@ namespace Common
       std::vector<dealii::Tensor<1, dim>> accepted_relative_displacement;
       std::vector<dealii::Tensor<1, dim>> slip_accumulated;
       std::vector<std::vector<int>>       history;
-      /** Nodes whose tangential motion is free (no DoF fixed). */
-      std::vector<bool> tangentially_free;
+      /** Orthonormal basis of the tangent directions along which each
+       * node may slip: the whole tangent plane (dim - 1 vectors) where no
+       * DoF is fixed, fewer where some are. */
+      std::vector<std::vector<dealii::Tensor<1, dim>>> free_tangents;
       /** Nodes with at least one free DoF. */
       std::vector<bool> normally_free;
       bool              cycling;

@@ -78,25 +78,51 @@ namespace Common
                      const double                  c);
 
       /**
-       * @brief Slip direction e for a slipping point's traction
-       * \f$\mu\lambda e\f$ in the next iteration, and the rate
-       * \f$\rho\f$ of its linearisation \f$de = \rho\,(I - e e^T)\,dv\f$
-       * (1/mm).
-       *
-       * Where the slip increment v points along the trial
-       * \f$t + c\,v\f$, e = v/|v| and \f$\rho = 1/|v|\f$: the Coulomb law
-       * at convergence (traction along the slip), linearised exactly, so
-       * that Newton converges quadratically also in 3D, where the
-       * direction turns. Otherwise (a point that has just started to slip,
-       * v = 0, or one whose slip still runs against the trial) e is the
-       * trial direction slip_direction() and \f$\rho = c/|t + c\,v|\f$,
-       * its derivative with t held. In 2D both give the same e.
+       * @brief Newton step of a slipping point, in the form the condensed
+       * enforcement imposes: the traction direction e and the turning
+       * stiffness k (MPa/mm) such that the next iterate satisfies
+       * \f$t^{+} \cdot e = s^{+}\f$ and
+       * \f$t^{+} \cdot e_\perp = k\, v^{+} \cdot e_\perp\f$ for every
+       * tangent \f$e_\perp \perp e\f$.
        */
       template <int dim>
-      std::pair<dealii::Tensor<1, dim>, double>
-      slip_direction_and_rate(const dealii::Tensor<1, dim> &traction,
-                              const dealii::Tensor<1, dim> &slip_increment,
-                              const double                  c);
+      struct SlipLinearisation
+      {
+        /** Unit direction of the traction (the trial direction). */
+        dealii::Tensor<1, dim> direction;
+        /** Turning stiffness k (MPa/mm); 0 where the bound vanishes. */
+        double turning_stiffness = 0.;
+      };
+
+      /**
+       * @brief The semismooth Newton step of complementarity() at a
+       * slipping point (\f$|q| > s\f$ with \f$q = t + c\,v\f$), split
+       * along e = q/|q| and across it.
+       *
+       * Inserting complementarity_jacobian() into
+       * \f$C + C_t\,dt + C_v\,dv + C_s\,ds = 0\f$ gives, along e,
+       * \f$t^{+}\cdot e = s^{+}\f$, and across it, since
+       * \f$t\cdot e_\perp = -c\,v\cdot e_\perp\f$ by the definition of e,
+       * \f$t^{+}\cdot e_\perp = k\,v^{+}\cdot e_\perp\f$ with
+       * \f$k = c\,s/(|q| - s)\f$: the traction t of the current iterate
+       * enters only through e and k, so a method that recovers t from the
+       * residual needs no derivative of it. At convergence
+       * (\f$t = s\,v/|v|\f$) e = v/|v| and k = s/|v|. In 2D the tangent
+       * line holds e alone and k plays no part.
+       *
+       * Reference: S. Hueeber, G. Stadler, B. Wohlmuth, SIAM J. Sci.
+       * Comput. 30 (2008) 572-596, section 3.
+       * @param[in] traction Tangential traction t (MPa).
+       * @param[in] slip_increment Slip increment v (mm).
+       * @param[in] slip_bound s = mu p (MPa), >= 0.
+       * @param[in] c Complementarity constant (MPa/mm), > 0.
+       */
+      template <int dim>
+      SlipLinearisation<dim>
+      slip_linearisation(const dealii::Tensor<1, dim> &traction,
+                         const dealii::Tensor<1, dim> &slip_increment,
+                         const double                  slip_bound,
+                         const double                  c);
 
       /**
        * @brief Generalised derivative of complementarity() at a point
