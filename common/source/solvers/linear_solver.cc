@@ -3,6 +3,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -12,6 +13,11 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
 
 namespace Common
 {
@@ -40,7 +46,17 @@ namespace Common
         prm.declare_entry("Maximum iterations",
                           "10000",
                           Patterns::Integer(1),
-                          "Iteration limit of 'cg amg'.");
+                          "Iteration limit of 'cg amg', and upper bound of "
+                          "the GMRES iterations with reused factors.");
+        prm.declare_entry(
+          "Reuse factorisation",
+          "false",
+          Patterns::Bool(),
+          "'mumps' and 'klu': solve the systems of later Newton iterations "
+          "by GMRES preconditioned with the factors of an earlier matrix, "
+          "to the relative residual 'Tolerance', and factorise anew only "
+          "when that would take longer than a factorisation. Pays off in "
+          "3D, where one factorisation costs tens of solves.");
       }
       prm.leave_subsection();
     }
@@ -53,12 +69,13 @@ namespace Common
       prm.enter_subsection("Linear solver");
       {
         const std::string name = prm.get("Solver type");
-        type           = (name == "umfpack" ? LinearSolverType::umfpack :
-                          name == "mumps"   ? LinearSolverType::mumps :
-                          name == "klu"     ? LinearSolverType::klu :
-                                              LinearSolverType::cg_amg);
-        tolerance      = prm.get_double("Tolerance");
-        max_iterations = prm.get_integer("Maximum iterations");
+        type                = (name == "umfpack" ? LinearSolverType::umfpack :
+                               name == "mumps"   ? LinearSolverType::mumps :
+                               name == "klu"     ? LinearSolverType::klu :
+                                                   LinearSolverType::cg_amg);
+        tolerance           = prm.get_double("Tolerance");
+        max_iterations      = prm.get_integer("Maximum iterations");
+        reuse_factorisation = prm.get_bool("Reuse factorisation");
       }
       prm.leave_subsection();
     }
@@ -70,7 +87,89 @@ namespace Common
       const Epetra_CrsMatrix               *matrix = nullptr;
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
+      /** Numeric factors exist (of an earlier matrix, with reuse). */
+      bool factorised = false;
+      /** Wall time of the last factorisation and of one solve with its
+       * factors (s). */
+      double factorisation_time = 0.;
+      double solve_time         = 0.;
+
+      /** x = (factored matrix)^-1 b. */
+      void
+      apply(TrilinosWrappers::MPI::Vector       &x,
+            const TrilinosWrappers::MPI::Vector &b) const
+      {
+        problem->SetLHS(&x.trilinos_vector());
+        problem->SetRHS(const_cast<Epetra_MultiVector *>(
+          static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+        AssertThrow(solver->Solve() == 0,
+                    ExcMessage("The direct solver failed."));
+      }
     };
+
+
+
+    namespace
+    {
+      /** The factors of an earlier matrix as a preconditioner. */
+      class FactorPreconditioner
+      {
+      public:
+        explicit FactorPreconditioner(
+          const std::function<void(TrilinosWrappers::MPI::Vector &,
+                                   const TrilinosWrappers::MPI::Vector &)>
+            &apply)
+          : apply(apply)
+        {}
+
+        void
+        vmult(TrilinosWrappers::MPI::Vector       &x,
+              const TrilinosWrappers::MPI::Vector &b) const
+        {
+          apply(x, b);
+        }
+
+      private:
+        std::function<void(TrilinosWrappers::MPI::Vector &,
+                           const TrilinosWrappers::MPI::Vector &)>
+          apply;
+      };
+
+      /** GMRES control that gives up as soon as the mean reduction per
+       * iteration so far cannot reach the tolerance within the limit. */
+      class StallControl : public SolverControl
+      {
+      public:
+        using SolverControl::SolverControl;
+
+        State
+        check(const unsigned int step, const double value) override
+        {
+          const State state = SolverControl::check(step, value);
+          if (state != iterate || step < 3)
+            return state;
+          const double rate = std::pow(value / initial_value(), 1. / step);
+          if (rate >= 1. ||
+              step + std::log(tolerance() / value) / std::log(rate) >
+                max_steps())
+            {
+              lcheck = failure;
+              return failure;
+            }
+          return state;
+        }
+      };
+
+
+
+      double
+      seconds_since(const std::chrono::steady_clock::time_point start)
+      {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+          .count();
+      }
+    } // namespace
 
 
 
@@ -122,14 +221,54 @@ namespace Common
           AssertThrow(direct->solver->SymbolicFactorization() == 0,
                       ExcMessage("Symbolic factorisation failed."));
         }
-      direct->problem->SetLHS(&x.trilinos_vector());
-      direct->problem->SetRHS(const_cast<Epetra_MultiVector *>(
-        static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
+
+      if (parameters.reuse_factorisation && direct->factorised)
+        {
+          // As many solves with the old factors as half a factorisation
+          // costs, at least 3.
+          // capped by "Maximum iterations".
+          const unsigned int limit =
+            std::min(parameters.max_iterations,
+                     static_cast<unsigned int>(
+                       std::clamp(0.5 * direct->factorisation_time /
+                                    std::max(direct->solve_time, 1e-9),
+                                  3.,
+                                  200.)));
+          StallControl control(limit, parameters.tolerance * b.l2_norm());
+          control.log_history(false);
+          control.log_result(false);
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
+          data.max_n_tmp_vectors     = limit + 2;
+          data.right_preconditioning = true;
+          SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
+          const FactorPreconditioner                 preconditioner(
+            [this](TrilinosWrappers::MPI::Vector       &y,
+                   const TrilinosWrappers::MPI::Vector &r) {
+              direct->apply(y, r);
+            });
+          TrilinosWrappers::MPI::Vector x_trial(x);
+          x_trial = 0.;
+          try
+            {
+              gmres.solve(A, x_trial, b, preconditioner);
+              x = x_trial;
+              return control.last_step();
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              // Refactorise below.
+            }
+        }
+
+      auto start = std::chrono::steady_clock::now();
       AssertThrow(direct->solver->NumericFactorization() == 0,
                   ExcMessage("Numeric factorisation failed: the linear "
                              "system is singular."));
-      AssertThrow(direct->solver->Solve() == 0,
-                  ExcMessage("The direct solver failed."));
+      direct->factorised         = true;
+      direct->factorisation_time = seconds_since(start);
+      start                      = std::chrono::steady_clock::now();
+      direct->apply(x, b);
+      direct->solve_time = seconds_since(start);
       return 1;
     }
 

@@ -47,12 +47,23 @@ namespace Common
       double tolerance;
       /** Iteration limit of the iterative solver. */
       unsigned int max_iterations;
+      /** Direct solvers: solve later systems by GMRES preconditioned with
+       * the factors of an earlier matrix while that is cheaper than a new
+       * factorisation. */
+      bool reuse_factorisation = false;
     };
 
     /**
      * @brief Linear solver that keeps what can be reused between solves
      * with matrices of one sparsity pattern: the symbolic factorisation of
-     * the sparse direct solvers. Call reset() when the pattern changes.
+     * the sparse direct solvers and, with "Reuse factorisation", their
+     * numeric factors. A later matrix of a Newton iteration (a few contact
+     * rows changed) is then solved by GMRES, right-preconditioned with the
+     * factors of the earlier one, to the relative residual "Tolerance";
+     * when GMRES would need longer than a new factorisation (more solves
+     * with the factors than half the measured factorisation time allows)
+     * or stalls, the matrix is factorised anew. Call reset() when the
+     * pattern changes.
      */
     class LinearSolver
     {
@@ -67,7 +78,8 @@ namespace Common
       /**
        * @brief Solve \f$A x = b\f$. Throws with a one-line message if
        * the solver fails.
-       * @return Number of iterations (1 for direct solvers).
+       * @return Number of iterations (1 for a direct solve, the GMRES
+       * iterations for a solve with reused factors).
        */
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &A,
