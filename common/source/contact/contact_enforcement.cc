@@ -413,14 +413,16 @@ namespace Common
           for (unsigned int d = 0; d < dim; ++d)
             all_free = all_free && !constraints.is_constrained(node.dofs[d]);
 
+          // Stick: D du_j = sum_k M_jk du_k + g~ n + D P(w(u) - w_old):
+          // after the increment the weighted gap vanishes and the relative
+          // tangential displacement is that of the last accepted step.
+          const Tensor<1, dim> target_defect =
+            state.status[j] == PointStatus::stick ?
+              coupling.weighted_gap(j, u) / row.weight * row.normal +
+                slip_increment(j, u) :
+              Tensor<1, dim>();
           if (state.status[j] == PointStatus::stick && all_free)
             {
-              // D du_j = sum_k M_jk du_k + g~ n + D P(w(u) - w_old): after
-              // the increment the weighted gap vanishes and the relative
-              // tangential displacement is that of the last accepted step.
-              const Tensor<1, dim> target_defect =
-                coupling.weighted_gap(j, u) / row.weight * row.normal +
-                slip_increment(j, u);
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   std::vector<std::pair<types::global_dof_index, double>>
@@ -439,9 +441,10 @@ namespace Common
 
           // A stick node with some DoFs fixed (a symmetry plane): the
           // normal condition and stick along the free tangents, A du_j =
-          // A (sum_k M_jk du_k / D + target) with the rows of A the normal
-          // and the free tangents, solved for the free components F:
-          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target) - A_X du_X).
+          // A (sum_k M_jk du_k / D + target_defect) with the rows of A the
+          // normal and the free tangents, solved for the free components F:
+          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target_defect) - A_X
+          // du_X).
           std::vector<unsigned int> free_components, fixed_components;
           for (unsigned int d = 0; d < dim; ++d)
             (constraints.is_constrained(node.dofs[d]) ? fixed_components :
@@ -466,9 +469,6 @@ namespace Common
                   A_F_inverse.invert(A_F);
                   FullMatrix<double> S(m, dim); // A_F^-1 A
                   A_F_inverse.mmult(S, A);
-                  const Tensor<1, dim> target =
-                    coupling.weighted_gap(j, u) / row.weight * row.normal +
-                    slip_increment(j, u);
                   for (unsigned int f = 0; f < m; ++f)
                     {
                       std::vector<std::pair<types::global_dof_index, double>>
@@ -476,7 +476,7 @@ namespace Common
                       double inhomogeneity = 0.;
                       for (unsigned int d = 0; d < dim; ++d)
                         {
-                          inhomogeneity += S(f, d) * target[d];
+                          inhomogeneity += S(f, d) * target_defect[d];
                           if (std::abs(S(f, d)) < 1e-14)
                             continue;
                           for (const auto &[k, M] : row.primary_weights)
