@@ -180,9 +180,14 @@ namespace TwoBlockPatch
      * Mesh both blocks (the interface nodes do not match, also after the
      * global refinement: 8 against 6 faces), set boundary ids, distribute
      * DoFs and start @p constraints with the hanging-node constraints.
+     * If @p refine_locally, the cells of the lower block with centre
+     * x < 1/2 (and y < 1/2 in 3D) and z > 1/2, and those of the upper block
+     * with centre x > 1/2 and z < 3/2, are refined once more, which in 3D
+     * leaves hanging nodes on both contact surfaces.
      */
     void
-    make_grid_and_dofs(AffineConstraints<double> &constraints)
+    make_grid_and_dofs(AffineConstraints<double> &constraints,
+                       const bool                 refine_locally = false)
     {
       Triangulation<dim> lower, upper;
       const double       top = 1. + setting.upper_height;
@@ -234,6 +239,19 @@ namespace TwoBlockPatch
             }
       if (dim == 2)
         triangulation.refine_global(1);
+      if (refine_locally)
+        {
+          for (const auto &cell : triangulation.active_cell_iterators())
+            {
+              const Point<dim> c = cell->center();
+              const double     z = c[dim - 1];
+              if (cell->material_id() == MaterialIds::lower ?
+                    (c[0] < 0.5 && (dim == 2 || c[1] < 0.5) && z > 0.5) :
+                    (c[0] > 0.5 && z < 1.5))
+                cell->set_refine_flag();
+            }
+          triangulation.execute_coarsening_and_refinement();
+        }
 
       dof_handler.distribute_dofs(fe);
       constraints.clear();

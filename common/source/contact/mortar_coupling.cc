@@ -537,6 +537,173 @@ namespace Common
 
     template <int dim>
     unsigned int
+    MortarCoupling<dim>::condense_hanging_nodes(
+      const AffineConstraints<double> &constraints)
+    {
+      Assert(secondary != nullptr, ExcMessage("Call reinit() first."));
+      const unsigned int n = rows.size();
+
+      // Secondary node and component of each secondary DoF.
+      std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
+        node_of_dof;
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int c = 0; c < dim; ++c)
+          node_of_dof[secondary->node(j).dofs[c]] = {j, c};
+
+      // The parents of each hanging node, with their weights.
+      std::vector<std::vector<std::pair<unsigned int, double>>> parents(n);
+      std::vector<unsigned int>                                 hanging;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const auto &dofs = secondary->node(j).dofs;
+          if (!std::all_of(dofs.begin(), dofs.end(), [&](const auto dof) {
+                return constraints.is_constrained(dof);
+              }))
+            continue;
+          for (unsigned int c = 0; c < dim && parents[j].empty(); ++c)
+            {
+              const auto *entries = constraints.get_constraint_entries(dofs[c]);
+              if (entries == nullptr || entries->empty() ||
+                  constraints.is_inhomogeneously_constrained(dofs[c]))
+                continue;
+              std::vector<std::pair<unsigned int, double>> candidate;
+              double                                       sum = 0.;
+              for (const auto &[dof, w] : *entries)
+                {
+                  const auto it = node_of_dof.find(dof);
+                  if (it == node_of_dof.end() || it->second.second != c)
+                    break;
+                  candidate.emplace_back(it->second.first, w);
+                  sum += w;
+                }
+              if (candidate.size() == entries->size() &&
+                  std::abs(sum - 1.) < 1e-10)
+                parents[j] = candidate;
+            }
+          if (!parents[j].empty())
+            hanging.push_back(j);
+        }
+      if (hanging.empty())
+        return 0;
+
+      // Groups of parents linked through shared hanging nodes (union-find).
+      std::vector<unsigned int> root(n);
+      for (unsigned int j = 0; j < n; ++j)
+        root[j] = j;
+      const auto find = [&root](unsigned int j) {
+        while (root[j] != j)
+          j = root[j] = root[root[j]];
+        return j;
+      };
+      for (const unsigned int h : hanging)
+        for (const auto &[p, w] : parents[h])
+          root[find(p)] = find(parents[h][0].first);
+      std::map<unsigned int, std::vector<unsigned int>> groups;
+      std::vector<bool>                                 is_parent(n, false);
+      for (const unsigned int h : hanging)
+        for (const auto &[p, w] : parents[h])
+          if (!is_parent[p])
+            {
+              is_parent[p] = true;
+              groups[find(p)].push_back(p);
+            }
+      std::map<unsigned int, std::vector<unsigned int>> hanging_of_group;
+      for (const unsigned int h : hanging)
+        hanging_of_group[find(parents[h][0].first)].push_back(h);
+
+      const std::vector<MortarRow<dim>> original = rows;
+      for (const auto &[group_root, group] : groups)
+        {
+          const unsigned int                   m = group.size();
+          std::map<unsigned int, unsigned int> index;
+          for (unsigned int a = 0; a < m; ++a)
+            index[group[a]] = a;
+
+          // D', Lambda, the merged rows M' and reference gap vectors G'
+          // (without the secondary term of the merged row, added below),
+          // and whether each merged row is fully paired.
+          FullMatrix<double>                          D(m, m);
+          std::vector<double>                         lambda(m);
+          std::vector<std::map<unsigned int, double>> M(m);
+          std::vector<Tensor<1, dim>>                 G(m);
+          std::vector<bool>                           paired(m);
+          for (unsigned int a = 0; a < m; ++a)
+            {
+              const MortarRow<dim> &row = original[group[a]];
+              D(a, a)                   = row.weight;
+              lambda[a]                 = row.weight;
+              for (const auto &[k, value] : row.primary_weights)
+                M[a][k] += value;
+              G[a] = -row.weight * secondary->node(group[a]).reference_position;
+              paired[a] = row.has_partner;
+            }
+          for (const unsigned int h : hanging_of_group[group_root])
+            {
+              const MortarRow<dim> &row = original[h];
+              for (const auto &[p, w] : parents[h])
+                {
+                  const unsigned int a = index[p];
+                  lambda[a] += w * row.weight;
+                  for (const auto &[q, v] : parents[h])
+                    D(a, index[q]) += w * v * row.weight;
+                  for (const auto &[k, value] : row.primary_weights)
+                    M[a][k] += w * value;
+                  G[a] -=
+                    w * row.weight * secondary->node(h).reference_position;
+                  paired[a] = paired[a] && row.has_partner;
+                }
+            }
+          for (unsigned int a = 0; a < m; ++a)
+            for (const auto &[k, value] : M[a])
+              G[a] += value * primary->node(k).reference_position;
+
+          FullMatrix<double> D_inverse(m, m);
+          D_inverse.invert(D);
+          for (unsigned int a = 0; a < m; ++a)
+            {
+              MortarRow<dim> &row     = rows[group[a]];
+              double          largest = 0.;
+              for (unsigned int b = 0; b < m; ++b)
+                largest = std::max(largest, std::abs(D_inverse(a, b)));
+              std::map<unsigned int, double> merged;
+              Tensor<1, dim>                 gap;
+              bool                           has_partner = lambda[a] > 0.;
+              for (unsigned int b = 0; b < m; ++b)
+                if (std::abs(D_inverse(a, b)) > 1e-13 * largest)
+                  {
+                    const double A = lambda[a] * D_inverse(a, b);
+                    for (const auto &[k, value] : M[b])
+                      merged[k] += A * value;
+                    gap += A * G[b];
+                    has_partner = has_partner && paired[b];
+                  }
+              row.weight      = lambda[a];
+              row.has_partner = has_partner;
+              row.primary_weights.clear();
+              if (has_partner)
+                for (const auto &[k, value] : merged)
+                  if (std::abs(value) > 1e-14 * row.weight)
+                    row.primary_weights.emplace_back(k, value);
+              row.reference_weighted_gap = row.normal * gap;
+            }
+        }
+
+      for (const unsigned int h : hanging)
+        {
+          MortarRow<dim> &row = rows[h];
+          row.weight          = 0.;
+          row.has_partner     = false;
+          row.primary_weights.clear();
+          row.reference_weighted_gap = 0.;
+          row.nodal_gap              = std::numeric_limits<double>::infinity();
+        }
+      return hanging.size();
+    }
+
+
+
+    template <int dim>
+    unsigned int
     MortarCoupling<dim>::n_rows() const
     {
       return rows.size();
@@ -611,6 +778,8 @@ namespace Common
       for (const auto &[k, M] : r.primary_weights)
         for (unsigned int c = 0; c < dim; ++c)
           d[c] += M * u(primary->node(k).dofs[c]);
+      if (r.weight == 0.)
+        return d;
       for (unsigned int c = 0; c < dim; ++c)
         d[c] -= r.weight * u(node.dofs[c]);
       return d / r.weight;

@@ -77,6 +77,7 @@ namespace Common
                     *search,
                     contact_parameters.search_distance,
                     physics.kinematics() == Physics::Kinematics::axisymmetric);
+      mortar.condense_hanging_nodes(constraints_dirichlet_and_hanging_nodes);
       contact_enforcement =
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            mortar,

@@ -20,6 +20,7 @@
 #include <common/contact/contact_search.h>
 #include <common/contact/contact_surface.h>
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <limits>
@@ -96,6 +97,42 @@ namespace Common
              const double               search_distance,
              const bool                 axisymmetric = false);
 
+      /**
+       * @brief Adapt the rows to the hanging nodes of the secondary
+       * surface; call after reinit().
+       *
+       * A secondary node whose displacement @p constraints interpolate
+       * from other secondary nodes p (weights w_hp) is no DoF: its dual
+       * function \f$\psi_h\f$ is handed to its parents,
+       * \f$\psi'_p = \psi_p + \sum_h w_{hp}\psi_h\f$, so that the
+       * multipliers still sum to one (a uniform pressure is represented
+       * exactly). On the constrained trace space
+       * \f$N'_p = N_p + \sum_h w_{hp} N_h\f$ these functions are no longer
+       * biorthogonal, \f$D'_{pq} = \int\psi'_p N'_q = D_p\delta_{pq} +
+       * \sum_h w_{hp} w_{hq} D_h\f$; the basis
+       * \f$\psi''_p = \sum_q A_{pq}\psi'_q\f$ with
+       * \f$A = \Lambda D'^{-1}\f$, \f$\Lambda_p = \int N'_p\f$, is again
+       * biorthogonal, \f$\int\psi''_p N'_q = \Lambda_p\delta_{pq}\f$, and
+       * sums to one. Each parent's row becomes D''_p = \f$\Lambda_p\f$,
+       * \f$M''_{pk} = \sum_q A_{pq}(M_{qk} + \sum_h w_{hq} M_{hk})\f$ and
+       * the corresponding reference weighted gap, so the weighted gap stays
+       * exact for any displacement of the constrained space and the
+       * condensation of D stays diagonal. A couples only parents linked
+       * through shared hanging nodes and decays fast away from the
+       * diagonal; entries below 1e-13 of a row's largest are dropped. The
+       * hanging node's row is emptied (no measure, no partner). A parent
+       * is paired only if every row it draws on was.
+       * @param[in] constraints Hanging-node (and Dirichlet) constraints,
+       * closed; a node counts as hanging if one of its components is
+       * constrained, without inhomogeneity, to the same component of other
+       * secondary nodes with weights summing to one, and all its components
+       * are constrained.
+       * @return The number of hanging nodes.
+       */
+      unsigned int
+      condense_hanging_nodes(
+        const dealii::AffineConstraints<double> &constraints);
+
       /** @brief Number of rows (= secondary nodes). */
       unsigned int
       n_rows() const;
@@ -123,7 +160,8 @@ namespace Common
       /**
        * @brief Mean relative displacement of the primary surface with
        * respect to secondary node j,
-       * \f$(\sum_k M_{jk} u_k - D_j u_j)/D_j\f$ (mm).
+       * \f$(\sum_k M_{jk} u_k - D_j u_j)/D_j\f$ (mm); zero for a node
+       * without measure (D_j = 0).
        */
       template <typename VectorType>
       dealii::Tensor<1, dim>
