@@ -181,9 +181,10 @@ namespace TwoBlockPatch
      * global refinement: 8 against 6 faces), set boundary ids, distribute
      * DoFs and start @p constraints with the hanging-node constraints.
      * If @p refine_locally, the cells of the lower block with centre
-     * x < 1/2 (and y < 1/2 in 3D) and z > 1/2, and those of the upper block
-     * with centre x > 1/2 and z < 3/2, are refined once more, which in 3D
-     * leaves hanging nodes on both contact surfaces.
+     * x < 1/2 (and y < 1/2 in 3D) and z > 1/2, and those of the upper
+     * block's bottom layer with centre x > 1/2, are refined once more,
+     * which in 3D leaves hanging nodes on both contact surfaces (and none
+     * on the top of the upper block).
      */
     void
     make_grid_and_dofs(AffineConstraints<double> &constraints,
@@ -247,7 +248,7 @@ namespace TwoBlockPatch
               const double     z = c[dim - 1];
               if (cell->material_id() == MaterialIds::lower ?
                     (c[0] < 0.5 && (dim == 2 || c[1] < 0.5) && z > 0.5) :
-                    (c[0] > 0.5 && z < 1.5))
+                    (c[0] > 0.5 && z - 1. < cell->extent_in_direction(dim - 1)))
                 cell->set_refine_flag();
             }
           triangulation.execute_coarsening_and_refinement();
