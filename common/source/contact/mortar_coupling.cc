@@ -586,109 +586,69 @@ namespace Common
       if (hanging.empty())
         return 0;
 
-      // Groups of parents linked through shared hanging nodes (union-find).
-      std::vector<unsigned int> root(n);
-      for (unsigned int j = 0; j < n; ++j)
-        root[j] = j;
-      const auto find = [&root](unsigned int j) {
-        while (root[j] != j)
-          j = root[j] = root[root[j]];
-        return j;
-      };
+      // A parent without measure has no dual function to correct with:
+      // its hanging nodes keep their rows (and take no condition).
+      std::vector<unsigned int> condensed;
       for (const unsigned int h : hanging)
-        for (const auto &[p, w] : parents[h])
-          root[find(p)] = find(parents[h][0].first);
-      std::map<unsigned int, std::vector<unsigned int>> groups;
-      std::vector<bool>                                 is_parent(n, false);
-      for (const unsigned int h : hanging)
-        for (const auto &[p, w] : parents[h])
-          if (!is_parent[p])
-            {
-              is_parent[p] = true;
-              groups[find(p)].push_back(p);
-            }
-      std::map<unsigned int, std::vector<unsigned int>> hanging_of_group;
-      for (const unsigned int h : hanging)
-        hanging_of_group[find(parents[h][0].first)].push_back(h);
+        if (std::all_of(parents[h].begin(),
+                        parents[h].end(),
+                        [this](const auto &p) {
+                          return rows[p.first].weight > 0.;
+                        }))
+          condensed.push_back(h);
+
+      // Each parent a's new row, as a combination of the original rows v:
+      // psi''_a = (Lambda_a / D_a) psi_a + sum_h w_ha psi_h
+      //           - sum_h w_ha D_h sum_q w_hq psi_q / D_q.
+      std::map<unsigned int, std::map<unsigned int, double>> combination;
+      for (const unsigned int h : condensed)
+        for (const auto &[a, w] : parents[h])
+          {
+            const auto [entry, is_new] = combination.try_emplace(a);
+            auto &c                    = entry->second;
+            if (is_new)
+              c[a] = 1.;
+            c[a] += w * rows[h].weight / rows[a].weight;
+            c[h] += w;
+            for (const auto &[q, v] : parents[h])
+              c[q] -= w * v * rows[h].weight / rows[q].weight;
+          }
 
       const std::vector<MortarRow<dim>> original = rows;
-      for (const auto &[group_root, group] : groups)
+      for (const auto &[a, c] : combination)
         {
-          const unsigned int                   m = group.size();
-          std::map<unsigned int, unsigned int> index;
-          for (unsigned int a = 0; a < m; ++a)
-            index[group[a]] = a;
-
-          // D', Lambda, the merged rows M' and reference gap vectors G'
-          // (without the secondary term of the merged row, added below),
-          // and whether each merged row is fully paired.
-          FullMatrix<double>                          D(m, m);
-          std::vector<double>                         lambda(m);
-          std::vector<std::map<unsigned int, double>> M(m);
-          std::vector<Tensor<1, dim>>                 G(m);
-          std::vector<bool>                           paired(m);
-          for (unsigned int a = 0; a < m; ++a)
+          MortarRow<dim>                &row         = rows[a];
+          double                         weight      = 0.;
+          bool                           has_partner = true;
+          Tensor<1, dim>                 gap;
+          std::map<unsigned int, double> merged;
+          for (const auto &[v, coefficient] : c)
             {
-              const MortarRow<dim> &row = original[group[a]];
-              D(a, a)                   = row.weight;
-              lambda[a]                 = row.weight;
-              for (const auto &[k, value] : row.primary_weights)
-                M[a][k] += value;
-              G[a] = -row.weight * secondary->node(group[a]).reference_position;
-              paired[a] = row.has_partner;
-            }
-          for (const unsigned int h : hanging_of_group[group_root])
-            {
-              const MortarRow<dim> &row = original[h];
-              for (const auto &[p, w] : parents[h])
+              const MortarRow<dim> &source = original[v];
+              weight += coefficient * source.weight;
+              has_partner = has_partner && source.has_partner;
+              for (const auto &[k, value] : source.primary_weights)
                 {
-                  const unsigned int a = index[p];
-                  lambda[a] += w * row.weight;
-                  for (const auto &[q, v] : parents[h])
-                    D(a, index[q]) += w * v * row.weight;
-                  for (const auto &[k, value] : row.primary_weights)
-                    M[a][k] += w * value;
-                  G[a] -=
-                    w * row.weight * secondary->node(h).reference_position;
-                  paired[a] = paired[a] && row.has_partner;
+                  merged[k] += coefficient * value;
+                  gap +=
+                    coefficient * value * primary->node(k).reference_position;
                 }
+              gap -= coefficient * source.weight *
+                     secondary->node(v).reference_position;
             }
-          for (unsigned int a = 0; a < m; ++a)
-            for (const auto &[k, value] : M[a])
-              G[a] += value * primary->node(k).reference_position;
-
-          FullMatrix<double> D_inverse(m, m);
-          D_inverse.invert(D);
-          for (unsigned int a = 0; a < m; ++a)
-            {
-              MortarRow<dim> &row     = rows[group[a]];
-              double          largest = 0.;
-              for (unsigned int b = 0; b < m; ++b)
-                largest = std::max(largest, std::abs(D_inverse(a, b)));
-              std::map<unsigned int, double> merged;
-              Tensor<1, dim>                 gap;
-              bool                           has_partner = lambda[a] > 0.;
-              for (unsigned int b = 0; b < m; ++b)
-                if (std::abs(D_inverse(a, b)) > 1e-13 * largest)
-                  {
-                    const double A = lambda[a] * D_inverse(a, b);
-                    for (const auto &[k, value] : M[b])
-                      merged[k] += A * value;
-                    gap += A * G[b];
-                    has_partner = has_partner && paired[b];
-                  }
-              row.weight      = lambda[a];
-              row.has_partner = has_partner;
-              row.primary_weights.clear();
-              if (has_partner)
-                for (const auto &[k, value] : merged)
-                  if (std::abs(value) > 1e-14 * row.weight)
-                    row.primary_weights.emplace_back(k, value);
-              row.reference_weighted_gap = row.normal * gap;
-            }
+          // The secondary terms sum to Lambda_a u_a for every displacement
+          // of the constrained space; weight is Lambda_a.
+          row.weight      = weight;
+          row.has_partner = has_partner && weight > 0.;
+          row.primary_weights.clear();
+          if (row.has_partner)
+            for (const auto &[k, value] : merged)
+              if (std::abs(value) > 1e-14 * weight)
+                row.primary_weights.emplace_back(k, value);
+          row.reference_weighted_gap = row.normal * gap;
         }
 
-      for (const unsigned int h : hanging)
+      for (const unsigned int h : condensed)
         {
           MortarRow<dim> &row = rows[h];
           row.weight          = 0.;
@@ -697,7 +657,7 @@ namespace Common
           row.reference_weighted_gap = 0.;
           row.nodal_gap              = std::numeric_limits<double>::infinity();
         }
-      return hanging.size();
+      return condensed.size();
     }
 
 

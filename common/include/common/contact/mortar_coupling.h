@@ -101,33 +101,32 @@ namespace Common
        * @brief Adapt the rows to the hanging nodes of the secondary
        * surface; call after reinit().
        *
-       * A secondary node whose displacement @p constraints interpolate
-       * from other secondary nodes p (weights w_hp) is no DoF: its dual
-       * function \f$\psi_h\f$ is handed to its parents,
-       * \f$\psi'_p = \psi_p + \sum_h w_{hp}\psi_h\f$, so that the
-       * multipliers still sum to one (a uniform pressure is represented
-       * exactly). On the constrained trace space
-       * \f$N'_p = N_p + \sum_h w_{hp} N_h\f$ these functions are no longer
-       * biorthogonal, \f$D'_{pq} = \int\psi'_p N'_q = D_p\delta_{pq} +
-       * \sum_h w_{hp} w_{hq} D_h\f$; the basis
-       * \f$\psi''_p = \sum_q A_{pq}\psi'_q\f$ with
-       * \f$A = \Lambda D'^{-1}\f$, \f$\Lambda_p = \int N'_p\f$, is again
-       * biorthogonal, \f$\int\psi''_p N'_q = \Lambda_p\delta_{pq}\f$, and
-       * sums to one. Each parent's row becomes D''_p = \f$\Lambda_p\f$,
-       * \f$M''_{pk} = \sum_q A_{pq}(M_{qk} + \sum_h w_{hq} M_{hk})\f$ and
-       * the corresponding reference weighted gap, so the weighted gap stays
-       * exact for any displacement of the constrained space and the
-       * condensation of D stays diagonal. A couples only parents linked
-       * through shared hanging nodes and decays fast away from the
-       * diagonal; entries below 1e-13 of a row's largest are dropped. The
-       * hanging node's row is emptied (no measure, no partner). A parent
-       * is paired only if every row it draws on was.
+       * A secondary node h whose displacement @p constraints interpolate
+       * from other secondary nodes a (weights w_ha) is no DoF, and the
+       * multiplier space loses its dual function \f$\psi_h\f$. Each parent
+       * takes it over, and the basis is made biorthogonal to the
+       * constrained trace functions \f$N'_a = N_a + \sum_h w_{ha} N_h\f$
+       * again, locally:
+       * \f[ \psi''_a = \frac{\Lambda_a}{D_a}\psi_a + \sum_h w_{ha}\psi_h
+       *    - \sum_h w_{ha} D_h \sum_q w_{hq}\frac{\psi_q}{D_q},\qquad
+       *    \Lambda_a = D_a + \sum_h w_{ha} D_h, \f]
+       * which gives \f$\int\psi''_a N'_b = \Lambda_a\delta_{ab}\f$ and
+       * \f$\sum_a\psi''_a = 1\f$ (a uniform pressure is represented
+       * exactly). Parent a's row becomes the same combination of the
+       * original rows: D''_a = \f$\Lambda_a\f$, M''_ak and the reference
+       * weighted gap (with the true position of h, which on a curved
+       * surface is not the interpolated one). The weighted gap is thus
+       * exact for every displacement of the constrained space, and D stays
+       * diagonal. The hanging node's row is emptied (no measure, no
+       * partner); a parent is paired only if every row it draws on was.
+       * A hanging node with a parent without measure (D = 0) keeps its
+       * row.
        * @param[in] constraints Hanging-node (and Dirichlet) constraints,
-       * closed; a node counts as hanging if one of its components is
-       * constrained, without inhomogeneity, to the same component of other
-       * secondary nodes with weights summing to one, and all its components
-       * are constrained.
-       * @return The number of hanging nodes.
+       * closed; a node counts as hanging if all its components are
+       * constrained and one of them is constrained, without inhomogeneity,
+       * to the same component of other secondary nodes with weights
+       * summing to one.
+       * @return The number of hanging nodes whose rows were handed over.
        */
       unsigned int
       condense_hanging_nodes(
