@@ -169,6 +169,9 @@ namespace Common
       const double x0 = profile[0].position[axis];
       if (i + 1 == profile.size())
         return profile[i].position[axis] - x0;
+      // Every closed node sticks: the stick zone is the contact zone.
+      if (profile[i + 1].status == "open")
+        return contact_extent(profile, axis);
       return 0.5 * (profile[i].position[axis] + profile[i + 1].position[axis]) -
              x0;
     }

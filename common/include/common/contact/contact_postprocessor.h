@@ -91,7 +91,8 @@ namespace Common
      * from the first profile point to the midpoint between the last
      * sticking node of the run of stick nodes that starts at the first
      * closed node and the next node (mm); zero if that node does not
-     * stick.
+     * stick. If the next node is open (every closed node of the run
+     * sticks), the stick zone is the contact zone: contact_extent().
      */
     template <int dim>
     double
