@@ -566,8 +566,10 @@ namespace Common
               rn += bulk_residual(node.dofs[c]) * row.normal[c];
               if (row.normal[c] == 0.)
                 continue;
-              for (auto entry = bulk_matrix.begin(node.dofs[c]);
-                   entry != bulk_matrix.end(node.dofs[c]);
+              // end() once: a Trilinos row iterator copies its row when
+              // it is made.
+              const auto end = bulk_matrix.end(node.dofs[c]);
+              for (auto entry = bulk_matrix.begin(node.dofs[c]); entry != end;
                    ++entry)
                 stiffness_row[entry->column()] +=
                   row.normal[c] * entry->value();
@@ -583,8 +585,9 @@ namespace Common
             if (std::find(B_dofs.begin(), B_dofs.end(), entry.first) ==
                 B_dofs.end())
               dofs.push_back(entry.first);
-          FullMatrix<double> K(dofs.size(), dofs.size());
-          Vector<double>     r(dofs.size());
+          // Only the rows of B's DoFs are non-zero: a rectangular block.
+          FullMatrix<double> K(B_dofs.size(), dofs.size());
+          Vector<double>     r(B_dofs.size());
           for (unsigned int a = 0; a < B_dofs.size(); ++a)
             {
               r(a) = -mu * pressure * B(a);
@@ -618,7 +621,18 @@ namespace Common
                       K(a, b) += k / row.weight * B_t2(a) * B_t2(b);
                   }
               }
-          constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
+          // As the square distribute_local_to_global() with matrix and
+          // vector: the inhomogeneities of constrained columns move to the
+          // right-hand side, then rows and columns are condensed.
+          for (unsigned int b = 0; b < dofs.size(); ++b)
+            if (constraints.is_inhomogeneously_constrained(dofs[b]))
+              {
+                const double g = constraints.get_inhomogeneity(dofs[b]);
+                for (unsigned int a = 0; a < B_dofs.size(); ++a)
+                  r(a) -= K(a, b) * g;
+              }
+          constraints.distribute_local_to_global(K, B_dofs, dofs, matrix);
+          constraints.distribute_local_to_global(r, B_dofs, residual);
         }
     }
 
