@@ -34,6 +34,15 @@ def run_variant(app, production, case_dir, overrides):
     subsection (directory case_dir, no graphical output, no plots, quiet)
     is added. Returns (summary.json as a dict, wall time in seconds).
     """
+    summary, wall, _ = run_variant_measured(app, production, case_dir, overrides)
+    return summary, wall
+
+
+def run_variant_measured(app, production, case_dir, overrides):
+    """As run_variant(), and also the run's peak resident memory (MB).
+
+    Returns (summary.json as a dict, wall time in seconds, peak memory in MB).
+    """
     os.makedirs(case_dir, exist_ok=True)
     sections = dict(overrides)
     sections["Output"] = {"Output directory": case_dir,
@@ -49,10 +58,14 @@ def run_variant(app, production, case_dir, overrides):
     with open(prm, "w") as f:
         f.write(text)
     start = time.time()
-    subprocess.run([app, prm], check=True, stdout=subprocess.DEVNULL)
+    process = subprocess.Popen([app, prm], stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(process.pid, 0)
     wall = time.time() - start
+    process.returncode = os.waitstatus_to_exitcode(status)
+    if process.returncode != 0:
+        raise subprocess.CalledProcessError(process.returncode, [app, prm])
     with open(os.path.join(case_dir, "summary.json")) as f:
-        return json.load(f), wall
+        return json.load(f), wall, usage.ru_maxrss / 1024.
 
 
 def contact_overrides(enforcement):

@@ -1,9 +1,13 @@
 #include <common/physics/rigid_body.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <limits>
+#include <map>
 
 namespace Common
 {
@@ -79,6 +83,77 @@ namespace Common
       return master;
     }
 
+
+
+    template <int dim>
+    std::vector<std::vector<double>>
+    rigid_body_modes(const Mapping<dim>    &mapping,
+                     const DoFHandler<dim> &dof_handler,
+                     const bool             include_rotations)
+    {
+      const FiniteElement<dim> &fe = dof_handler.get_fe();
+      AssertThrow(fe.n_components() == dim && fe.has_support_points(),
+                  ExcMessage("Rigid-body modes: the element must be a "
+                             "Lagrange element with one component per "
+                             "displacement direction."));
+
+      std::map<types::global_dof_index, Point<dim>> points;
+      DoFTools::map_dofs_to_support_points(mapping, dof_handler, points);
+      const BoundingBox<dim> box =
+        GridTools::compute_bounding_box(dof_handler.get_triangulation());
+      const Point<dim> centre = box.center();
+
+      const IndexSet           &owned = dof_handler.locally_owned_dofs();
+      std::vector<unsigned int> component(owned.n_elements(), 0);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              if (owned.is_element(dof_indices[i]))
+                component[owned.index_within_set(dof_indices[i])] =
+                  fe.system_to_component_index(i).first;
+          }
+
+      const unsigned int n_rotations =
+        include_rotations ? (dim == 2 ? 1 : 3) : 0;
+      std::vector<std::vector<double>> modes(
+        dim + n_rotations,
+        std::vector<double>(owned.n_elements(), 0.));
+      for (unsigned int k = 0; k < owned.n_elements(); ++k)
+        {
+          const types::global_dof_index dof = owned.nth_index_in_set(k);
+          const unsigned int            c   = component[k];
+          modes[c][k]                       = 1.;
+          if (n_rotations == 0)
+            continue;
+          const auto point = points.find(dof);
+          AssertThrow(point != points.end(),
+                      ExcMessage("Rigid-body modes: a locally owned DoF has "
+                                 "no support point on this process."));
+          const Tensor<1, dim> x = point->second - centre;
+          // Rotation about axis a: u = e_a x (x - centre); in 2D about the
+          // out-of-plane axis.
+          for (unsigned int r = 0; r < n_rotations; ++r)
+            {
+              const unsigned int a = (dim == 2 ? 2 : r);
+              // (e_a x x)_c = epsilon_{c a j} x_j, with the Levi-Civita
+              // symbol epsilon_{ijk} = (i - j)(j - k)(k - i)/2.
+              double value = 0.;
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  const int ci = c, ai = a, ji = j;
+                  value += (ci - ai) * (ai - ji) * (ji - ci) / 2 * x[j];
+                }
+              modes[dim + r][k] = value;
+            }
+        }
+      return modes;
+    }
+
+
+
     template std::vector<types::global_dof_index>
     add_rigid_translation_constraints(const DoFHandler<2> &,
                                       const types::material_id,
@@ -91,5 +166,9 @@ namespace Common
                                       const Point<3> &,
                                       const ComponentMask &,
                                       AffineConstraints<double> &);
+    template std::vector<std::vector<double>>
+    rigid_body_modes(const Mapping<2> &, const DoFHandler<2> &, const bool);
+    template std::vector<std::vector<double>>
+    rigid_body_modes(const Mapping<3> &, const DoFHandler<3> &, const bool);
   } // namespace Physics
 } // namespace Common

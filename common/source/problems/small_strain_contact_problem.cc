@@ -1,4 +1,5 @@
 #include <common/io/timer.h>
+#include <common/physics/rigid_body.h>
 #include <common/problems/small_strain_contact_problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -107,6 +108,13 @@ namespace Common
                            dsp,
                            mpi_communicator);
       linear_solver.reset();
+      if (linear_solver.uses_multigrid())
+        linear_solver.set_near_null_space(
+          Physics::rigid_body_modes(mapping,
+                                    dof_handler,
+                                    physics.kinematics() !=
+                                      Physics::Kinematics::axisymmetric),
+          dim);
 
       if (contact_enforcement->has_friction())
         {

@@ -13,11 +13,15 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
+#include <Teuchos_ParameterList.hpp>
+#include <ml_MultiLevelPreconditioner.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iomanip>
+#include <sstream>
 
 namespace Common
 {
@@ -32,22 +36,30 @@ namespace Common
       {
         prm.declare_entry("Solver type",
                           "mumps",
-                          Patterns::Selection("umfpack|mumps|klu|cg amg"),
+                          Patterns::Selection(
+                            "umfpack|mumps|klu|cg amg|gmres amg"),
                           "Linear solver: 'umfpack' (sparse direct, one MPI "
                           "rank only), 'mumps' (parallel sparse direct), "
-                          "'klu' (sparse direct, gathered on one rank) or "
-                          "'cg amg' (conjugate gradients with algebraic "
-                          "multigrid, for large 3D cases).");
+                          "'klu' (sparse direct, gathered on one rank), "
+                          "'cg amg' (conjugate gradients with smoothed-"
+                          "aggregation algebraic multigrid on the rigid-body "
+                          "modes; symmetric systems only, i.e. without "
+                          "friction) or 'gmres amg' (GMRES with the same "
+                          "multigrid; also with friction). The multigrid "
+                          "solvers are for 3D cases beyond a direct "
+                          "solver's memory or time.");
         prm.declare_entry("Tolerance",
                           "1e-12",
                           Patterns::Double(0.),
-                          "Relative residual tolerance of 'cg amg'. "
+                          "Relative residual tolerance of 'cg amg', "
+                          "'gmres amg' and of GMRES with reused factors. "
                           "Dimensionless.");
         prm.declare_entry("Maximum iterations",
                           "10000",
                           Patterns::Integer(1),
-                          "Iteration limit of 'cg amg', and upper bound of "
-                          "the GMRES iterations with reused factors.");
+                          "Iteration limit of 'cg amg' and 'gmres amg', and "
+                          "upper bound of the GMRES iterations with reused "
+                          "factors.");
         prm.declare_entry(
           "Reuse factorisation",
           "false",
@@ -72,7 +84,8 @@ namespace Common
         type                = (name == "umfpack" ? LinearSolverType::umfpack :
                                name == "mumps"   ? LinearSolverType::mumps :
                                name == "klu"     ? LinearSolverType::klu :
-                                                   LinearSolverType::cg_amg);
+                               name == "cg amg"  ? LinearSolverType::cg_amg :
+                                                   LinearSolverType::gmres_amg);
         tolerance           = prm.get_double("Tolerance");
         max_iterations      = prm.get_integer("Maximum iterations");
         reuse_factorisation = prm.get_bool("Reuse factorisation");
@@ -169,6 +182,54 @@ namespace Common
                                              start)
           .count();
       }
+
+
+
+      /** UMFPACK on one rank, on a copy in deal.II's sparse format. */
+      unsigned int
+      solve_umfpack(const TrilinosWrappers::SparseMatrix &A,
+                    TrilinosWrappers::MPI::Vector        &x,
+                    const TrilinosWrappers::MPI::Vector  &b)
+      {
+        AssertThrow(Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) ==
+                      1,
+                    ExcMessage("Linear solver 'umfpack' runs on one MPI "
+                               "rank only; use 'mumps' in parallel."));
+        // Copy into deal.II's own sparse format, which UMFPACK reads.
+        const auto            &epetra = A.trilinos_matrix();
+        DynamicSparsityPattern dsp(A.m(), A.n());
+        for (int row = 0; row < epetra.NumMyRows(); ++row)
+          {
+            int     n_entries;
+            double *values;
+            int    *columns;
+            epetra.ExtractMyRowView(row, n_entries, values, columns);
+            for (int k = 0; k < n_entries; ++k)
+              dsp.add(epetra.GRID(row), epetra.GCID(columns[k]));
+          }
+        SparsityPattern pattern;
+        pattern.copy_from(dsp);
+        SparseMatrix<double> matrix(pattern);
+        for (int row = 0; row < epetra.NumMyRows(); ++row)
+          {
+            int     n_entries;
+            double *values;
+            int    *columns;
+            epetra.ExtractMyRowView(row, n_entries, values, columns);
+            for (int k = 0; k < n_entries; ++k)
+              matrix.set(epetra.GRID(row), epetra.GCID(columns[k]), values[k]);
+          }
+        SparseDirectUMFPACK umfpack;
+        umfpack.initialize(matrix);
+        Vector<double> rhs(b.size()), x_serial(b.size());
+        for (const auto i : b.locally_owned_elements())
+          rhs(i) = b(i);
+        umfpack.vmult(x_serial, rhs);
+        for (const auto i : x.locally_owned_elements())
+          x(i) = x_serial(i);
+        x.compress(VectorOperation::insert);
+        return 1;
+      }
     } // namespace
 
 
@@ -196,9 +257,11 @@ namespace Common
                         TrilinosWrappers::MPI::Vector        &x,
                         const TrilinosWrappers::MPI::Vector  &b)
     {
-      if (parameters.type != LinearSolverType::mumps &&
-          parameters.type != LinearSolverType::klu)
-        return solve_linear_system(parameters, A, x, b);
+      if (parameters.type == LinearSolverType::umfpack)
+        return solve_umfpack(A, x, b);
+      if (parameters.type == LinearSolverType::cg_amg ||
+          parameters.type == LinearSolverType::gmres_amg)
+        return solve_amg(A, x, b);
 
       // Amesos keeps the symbolic factorisation of the matrix object; a
       // new object (or reset()) starts over.
@@ -274,78 +337,116 @@ namespace Common
 
 
 
+    bool
+    LinearSolver::uses_multigrid() const
+    {
+      return parameters.type == LinearSolverType::cg_amg ||
+             parameters.type == LinearSolverType::gmres_amg;
+    }
+
+
+
+    void
+    LinearSolver::set_near_null_space(
+      const std::vector<std::vector<double>> &modes,
+      const unsigned int                      n_components)
+    {
+      n_null_space_modes = modes.size();
+      this->n_components = n_components;
+      null_space.clear();
+      for (const auto &mode : modes)
+        null_space.insert(null_space.end(), mode.begin(), mode.end());
+    }
+
+
+
+    unsigned int
+    LinearSolver::solve_amg(const TrilinosWrappers::SparseMatrix &A,
+                            TrilinosWrappers::MPI::Vector        &x,
+                            const TrilinosWrappers::MPI::Vector  &b) const
+    {
+      const auto n_rows =
+        static_cast<std::size_t>(A.trilinos_matrix().NumMyRows());
+      AssertThrow(n_null_space_modes == 0 ||
+                    null_space.size() == n_null_space_modes * n_rows,
+                  ExcMessage("The near null space does not match the "
+                             "locally owned rows of the matrix."));
+
+      // Smoothed aggregation as deal.II's PreconditionAMG sets it up for
+      // elliptic problems with higher-order elements, plus the near null
+      // space.
+      Teuchos::ParameterList list;
+      ML_Epetra::SetDefaults("SA", list);
+      list.set("aggregation: type", "Uncoupled");
+      list.set("aggregation: threshold", 1e-4);
+      list.set("smoother: type", "Chebyshev");
+      list.set("smoother: sweeps", 2);
+      list.set("smoother: Chebyshev alpha", 10.);
+      list.set("smoother: ifpack overlap", 0);
+      list.set("coarse: max size", 2000);
+      list.set("coarse: type", "Amesos-KLU");
+      list.set("ML output", 0);
+      list.set("PDE equations", static_cast<int>(n_components));
+      // The Chebyshev smoother needs the largest eigenvalue of D^-1 A; ML
+      // estimates it by conjugate gradients, which fail on the
+      // non-symmetric matrices of friction, so GMRES takes the power
+      // method.
+      if (parameters.type == LinearSolverType::gmres_amg)
+        list.set("eigen-analysis: type", "power-method");
+      std::vector<double> modes = null_space;
+      if (n_null_space_modes > 0)
+        {
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension",
+                   static_cast<int>(n_null_space_modes));
+          list.set("null space: vectors", modes.data());
+        }
+      TrilinosWrappers::PreconditionAMG amg;
+      amg.initialize(A, list);
+
+      SolverControl control(parameters.max_iterations,
+                            parameters.tolerance * b.l2_norm());
+      control.log_history(false);
+      control.log_result(false);
+      try
+        {
+          if (parameters.type == LinearSolverType::cg_amg)
+            {
+              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              cg.solve(A, x, b, amg);
+            }
+          else
+            {
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
+              data.max_n_tmp_vectors     = 102;
+              data.right_preconditioning = true;
+              SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
+              gmres.solve(A, x, b, amg);
+            }
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          std::ostringstream message;
+          message << std::scientific << std::setprecision(2)
+                  << "The iterative linear solver did not reach the relative "
+                  << "residual " << parameters.tolerance << " in "
+                  << e.last_step << " iterations (reached "
+                  << e.last_residual / std::max(b.l2_norm(), 1e-300) << ").";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+      return control.last_step();
+    }
+
+
+
     unsigned int
     solve_linear_system(const LinearSolverParameters         &parameters,
                         const TrilinosWrappers::SparseMatrix &A,
                         TrilinosWrappers::MPI::Vector        &x,
                         const TrilinosWrappers::MPI::Vector  &b)
     {
-      if (parameters.type == LinearSolverType::cg_amg)
-        {
-          SolverControl                     control(parameters.max_iterations,
-                                parameters.tolerance * b.l2_norm());
-          TrilinosWrappers::PreconditionAMG amg;
-          TrilinosWrappers::PreconditionAMG::AdditionalData data;
-          data.elliptic              = true;
-          data.higher_order_elements = true;
-          amg.initialize(A, data);
-          SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-          cg.solve(A, x, b, amg);
-          return control.last_step();
-        }
-
-      if (parameters.type == LinearSolverType::umfpack)
-        {
-          AssertThrow(Utilities::MPI::n_mpi_processes(
-                        A.get_mpi_communicator()) == 1,
-                      ExcMessage("Linear solver 'umfpack' runs on one MPI "
-                                 "rank only; use 'mumps' in parallel."));
-          // Copy into deal.II's own sparse format, which UMFPACK reads.
-          const auto            &epetra = A.trilinos_matrix();
-          DynamicSparsityPattern dsp(A.m(), A.n());
-          for (int row = 0; row < epetra.NumMyRows(); ++row)
-            {
-              int     n_entries;
-              double *values;
-              int    *columns;
-              epetra.ExtractMyRowView(row, n_entries, values, columns);
-              for (int k = 0; k < n_entries; ++k)
-                dsp.add(epetra.GRID(row), epetra.GCID(columns[k]));
-            }
-          SparsityPattern pattern;
-          pattern.copy_from(dsp);
-          SparseMatrix<double> matrix(pattern);
-          for (int row = 0; row < epetra.NumMyRows(); ++row)
-            {
-              int     n_entries;
-              double *values;
-              int    *columns;
-              epetra.ExtractMyRowView(row, n_entries, values, columns);
-              for (int k = 0; k < n_entries; ++k)
-                matrix.set(epetra.GRID(row),
-                           epetra.GCID(columns[k]),
-                           values[k]);
-            }
-          SparseDirectUMFPACK umfpack;
-          umfpack.initialize(matrix);
-          Vector<double> rhs(b.size()), x_serial(b.size());
-          for (const auto i : b.locally_owned_elements())
-            rhs(i) = b(i);
-          umfpack.vmult(x_serial, rhs);
-          for (const auto i : x.locally_owned_elements())
-            x(i) = x_serial(i);
-          x.compress(VectorOperation::insert);
-          return 1;
-        }
-
-      SolverControl                                  control(1, 0);
-      TrilinosWrappers::SolverDirect::AdditionalData data(
-        false,
-        parameters.type == LinearSolverType::mumps ? "Amesos_Mumps" :
-                                                     "Amesos_Klu");
-      TrilinosWrappers::SolverDirect solver(control, data);
-      solver.solve(A, x, b);
-      return 1;
+      LinearSolver solver(parameters);
+      return solver.solve(A, x, b);
     }
   } // namespace Solvers
 } // namespace Common

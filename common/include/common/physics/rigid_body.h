@@ -6,6 +6,8 @@
  * assembly; a rigid translation strains nothing, so they add no internal
  * force, and loads on the body sum up on the master DoFs. Rotations are not
  * represented (the axisymmetric and symmetric benchmark tools need none).
+ * Also the rigid-body modes of a displacement field, for algebraic
+ * multigrid.
  */
 #ifndef common_physics_rigid_body_h
 #define common_physics_rigid_body_h
@@ -14,6 +16,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <vector>
@@ -53,6 +56,31 @@ namespace Common
       const dealii::Point<dim>          &reference_point,
       const dealii::ComponentMask       &fixed_components,
       dealii::AffineConstraints<double> &constraints);
+
+    /**
+     * @brief Rigid-body modes of the displacement field, the near null
+     * space of elasticity that algebraic multigrid needs to build good
+     * coarse spaces.
+     *
+     * The modes are the dim translations and, if @p include_rotations, the
+     * rotations (one in 2D, three in 3D) about the centre of the mesh's
+     * bounding box, evaluated at the support points of @p mapping. For an
+     * axisymmetric model pass false: only the translations approximate its
+     * near null space (an axial translation is one, a radial one nearly
+     * so away from the axis).
+     *
+     * The finite element must be a vector-valued Lagrange element with
+     * dim components.
+     *
+     * @return One vector per mode, with the mode's values at the locally
+     * owned DoFs in the order of DoFHandler::locally_owned_dofs() (mm for
+     * a translation, mm per radian for a rotation).
+     */
+    template <int dim>
+    std::vector<std::vector<double>>
+    rigid_body_modes(const dealii::Mapping<dim>    &mapping,
+                     const dealii::DoFHandler<dim> &dof_handler,
+                     const bool                     include_rotations);
   } // namespace Physics
 } // namespace Common
 

@@ -2,8 +2,10 @@
  * @file linear_solver.h
  * The "Linear solver" subsection and the solve of one linear system:
  * sparse direct (UMFPACK on one rank; MUMPS or KLU through Trilinos
- * Amesos, in parallel) or
- * conjugate gradients with algebraic multigrid (ML) for large 3D cases.
+ * Amesos, in parallel) or Krylov methods (conjugate gradients for symmetric
+ * systems, GMRES for the non-symmetric ones of friction) preconditioned by
+ * smoothed-aggregation algebraic multigrid (Trilinos ML) with the
+ * rigid-body modes as near null space, for large 3D cases.
  */
 #ifndef common_solvers_linear_solver_h
 #define common_solvers_linear_solver_h
@@ -26,7 +28,8 @@ namespace Common
       umfpack,
       mumps,
       klu,
-      cg_amg
+      cg_amg,
+      gmres_amg
     };
 
     /**
@@ -75,11 +78,31 @@ namespace Common
       void
       reset();
 
+      /** @brief Whether the solver is one of the multigrid ones, which
+       * can use set_near_null_space(). */
+      bool
+      uses_multigrid() const;
+
+      /**
+       * @brief Near null space for the algebraic multigrid of 'cg amg'
+       * and 'gmres amg', e.g. Physics::rigid_body_modes().
+       * @param modes One vector per mode with its values at the locally
+       * owned DoFs, in the order of the matrix's locally owned rows.
+       * @param n_components Number of DoFs per node (the displacement
+       * components); the DoFs of a node must be numbered consecutively.
+       * Without this call, the multigrid takes the constant of each
+       * component only.
+       */
+      void
+      set_near_null_space(const std::vector<std::vector<double>> &modes,
+                          const unsigned int                      n_components);
+
       /**
        * @brief Solve \f$A x = b\f$. Throws with a one-line message if
        * the solver fails.
        * @return Number of iterations (1 for a direct solve, the GMRES
-       * iterations for a solve with reused factors).
+       * iterations for a solve with reused factors, the Krylov iterations
+       * of the multigrid solvers).
        */
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &A,
@@ -90,6 +113,16 @@ namespace Common
       struct DirectSolverData;
       const LinearSolverParameters      parameters;
       std::unique_ptr<DirectSolverData> direct;
+      /** Near null space, mode after mode (ML's column-major layout). */
+      std::vector<double> null_space;
+      unsigned int        n_null_space_modes = 0;
+      unsigned int        n_components       = 1;
+
+      /** Solve with 'cg amg' or 'gmres amg'. */
+      unsigned int
+      solve_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                dealii::TrilinosWrappers::MPI::Vector        &x,
+                const dealii::TrilinosWrappers::MPI::Vector  &b) const;
     };
 
     /**

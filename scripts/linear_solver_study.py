@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Linear solvers compared on one case: time, memory and answer.
+
+Runs one production parameter file (by default the 3D quarter model of
+benchmark 2, parameters/punch3d/punch_3d_quarter_mu0.prm, 160 000 DoFs)
+with each linear solver of the 'Linear solver' subsection: MUMPS with a
+new factorisation per Newton iteration, MUMPS with reused factors, and
+the Krylov solvers with smoothed-aggregation multigrid on the rigid-body
+modes ('cg amg' for frictionless cases, 'gmres amg' also with friction).
+For each run it records the Newton iterations, the linear-solve and total
+wall times, the peak resident memory, and the results (u_z on the axis,
+the centre pressure, the contact radius), with their relative difference
+from the first solver's. Writes linear_solver_study.csv.
+
+Usage: scripts/linear_solver_study.py [--build DIR] [--out DIR]
+           [--prm FILE] [--app punch3d|cgs_roller]
+           [--solvers "mumps" "mumps reuse" "cg amg" "gmres amg"]
+           [--mesh "Number of contact refinements=1" ...]
+"""
+import argparse
+import os
+
+from study_tools import ROOT, run_variant_measured, write_table
+
+RESULT_KEYS = {
+    "punch3d": ["foundation_top_axis_uz_mm", "pressure_at_centre_MPa",
+                "contact_radius_mm"],
+    "cgs_roller": ["peak_pressure_MPa", "contact_half_width_mm",
+                   "peak_tangential_traction_MPa"],
+}
+
+
+def solver_overrides(solver):
+    """The 'Linear solver' entries selecting one solver label."""
+    if solver == "mumps reuse":
+        return {"Solver type": "mumps", "Reuse factorisation": "true"}
+    return {"Solver type": solver, "Reuse factorisation": "false"}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build-release"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "results/studies/linear_solvers"))
+    parser.add_argument("--prm", default=os.path.join(
+        ROOT, "parameters/punch3d/punch_3d_quarter_mu0.prm"))
+    parser.add_argument("--app", default="punch3d", choices=sorted(RESULT_KEYS))
+    parser.add_argument("--solvers", nargs="+",
+                        default=["mumps", "mumps reuse", "cg amg"])
+    parser.add_argument("--mesh", nargs="*", default=[],
+                        help="'Mesh' entries to override, as 'name=value'")
+    args = parser.parse_args()
+
+    app = os.path.join(args.build, args.app, args.app)
+    prm = os.path.abspath(args.prm)
+    mesh = dict(entry.split("=", 1) for entry in args.mesh)
+    os.makedirs(args.out, exist_ok=True)
+    rows = []
+    for solver in args.solvers:
+        case_dir = os.path.join(args.out, "runs", solver.replace(" ", "_"))
+        overrides = {"Linear solver": solver_overrides(solver)}
+        if mesh:
+            overrides["Mesh"] = mesh
+        summary, wall, memory = run_variant_measured(app, prm, case_dir, overrides)
+        row = {"solver": solver,
+               "n_dofs": summary["mesh"]["n_dofs"],
+               "newton_iterations": summary["newton"]["total_iterations"],
+               "linear_solve_s": round(summary["timing_s"]["linear_solve_s"], 2),
+               "wall_time_s": round(wall, 2),
+               "peak_memory_MB": round(memory, 1)}
+        for key in RESULT_KEYS[args.app]:
+            row[key] = summary["results"][key]
+        if rows:
+            for key in RESULT_KEYS[args.app]:
+                row[f"{key}_difference"] = "%.2e" % (row[key] / rows[0][key] - 1.)
+        else:
+            for key in RESULT_KEYS[args.app]:
+                row[f"{key}_difference"] = "0"
+        rows.append(row)
+        print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
+    write_table(os.path.join(args.out, "linear_solver_study.csv"), rows)
+
+
+if __name__ == "__main__":
+    main()
