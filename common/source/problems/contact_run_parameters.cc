@@ -30,6 +30,12 @@ namespace Common
       load_stepping.parse_parameters(prm);
       output.parse_parameters(prm);
       run_control.parse_parameters(prm);
+      AssertThrow(!(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
+                    contact.friction_law != Contact::FrictionLaw::frictionless),
+                  ExcMessage(
+                    "Linear solver 'cg amg' needs a symmetric system, which "
+                    "friction does not give; use 'gmres amg' or a direct "
+                    "solver."));
 
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);
