@@ -431,7 +431,9 @@ namespace Common
                   << "The iterative linear solver did not reach the relative "
                   << "residual " << parameters.tolerance << " in "
                   << e.last_step << " iterations (reached "
-                  << e.last_residual / std::max(b.l2_norm(), 1e-300) << ").";
+                  << e.last_residual / std::max(b.l2_norm(), 1e-300)
+                  << "); raise 'Maximum iterations' or choose a direct "
+                  << "solver.";
           AssertThrow(false, ExcMessage(message.str()));
         }
       return control.last_step();
