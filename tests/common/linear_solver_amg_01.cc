@@ -12,7 +12,8 @@
  *     is not a rigid motion (e.g. a rotation with a misplaced component).
  * (b) 'cg amg' and 'gmres amg' with all modes, and 'cg amg' with the
  *     translations only, reproduce the MUMPS solution to 1e-8 relative
- *     (the Krylov tolerance is 1e-12).
+ *     (the Krylov tolerance is 1e-12), and so do the other direct solvers,
+ *     'umfpack' and 'klu'.
  * (c) With the rotations the conjugate gradients need fewer iterations
  *     than with the translations only.
  * (d) A non-symmetric matrix, like a friction tangent (every free x row
@@ -166,6 +167,8 @@ namespace
     const unsigned int cg_modes =
       solve(Common::Solvers::LinearSolverType::cg_amg, modes, "(b) cg amg");
     solve(Common::Solvers::LinearSolverType::gmres_amg, modes, "(b) gmres amg");
+    solve(Common::Solvers::LinearSolverType::umfpack, modes, "(b) umfpack");
+    solve(Common::Solvers::LinearSolverType::klu, modes, "(b) klu");
     const unsigned int cg_translations =
       solve(Common::Solvers::LinearSolverType::cg_amg,
             translations,

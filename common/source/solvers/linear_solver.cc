@@ -196,29 +196,27 @@ namespace Common
                     ExcMessage("Linear solver 'umfpack' runs on one MPI "
                                "rank only; use 'mumps' in parallel."));
         // Copy into deal.II's own sparse format, which UMFPACK reads.
-        const auto            &epetra = A.trilinos_matrix();
+        const auto &epetra         = A.trilinos_matrix();
+        const auto  for_each_entry = [&epetra](const auto &f) {
+          for (int row = 0; row < epetra.NumMyRows(); ++row)
+            {
+              int     n_entries;
+              double *values;
+              int    *columns;
+              epetra.ExtractMyRowView(row, n_entries, values, columns);
+              for (int k = 0; k < n_entries; ++k)
+                f(epetra.GRID(row), epetra.GCID(columns[k]), values[k]);
+            }
+        };
         DynamicSparsityPattern dsp(A.m(), A.n());
-        for (int row = 0; row < epetra.NumMyRows(); ++row)
-          {
-            int     n_entries;
-            double *values;
-            int    *columns;
-            epetra.ExtractMyRowView(row, n_entries, values, columns);
-            for (int k = 0; k < n_entries; ++k)
-              dsp.add(epetra.GRID(row), epetra.GCID(columns[k]));
-          }
+        for_each_entry(
+          [&dsp](const int i, const int j, const double) { dsp.add(i, j); });
         SparsityPattern pattern;
         pattern.copy_from(dsp);
         SparseMatrix<double> matrix(pattern);
-        for (int row = 0; row < epetra.NumMyRows(); ++row)
-          {
-            int     n_entries;
-            double *values;
-            int    *columns;
-            epetra.ExtractMyRowView(row, n_entries, values, columns);
-            for (int k = 0; k < n_entries; ++k)
-              matrix.set(epetra.GRID(row), epetra.GCID(columns[k]), values[k]);
-          }
+        for_each_entry([&matrix](const int i, const int j, const double value) {
+          matrix.set(i, j, value);
+        });
         SparseDirectUMFPACK umfpack;
         umfpack.initialize(matrix);
         Vector<double> rhs(b.size()), x_serial(b.size());
