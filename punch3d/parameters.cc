@@ -1,5 +1,7 @@
 #include "parameters.h"
 
+#include <cmath>
+
 
 namespace Punch3d
 {
@@ -66,7 +68,10 @@ namespace Punch3d
                         "Radius of the rounded edge between the punch's "
                         "flat face and its side; less than 0.4 times the "
                         "punch radius and a third of the punch height. "
-                        "Units: mm.");
+                        "Equal to the punch radius, the punch ends in a "
+                        "hemisphere (Hertz point contact, a verification "
+                        "case of the axisymmetric model; the punch height "
+                        "must then exceed 1.5 punch radii). Units: mm.");
       prm.declare_entry("Foundation radius",
                         "100",
                         Patterns::Double(0.),
@@ -78,6 +83,14 @@ namespace Punch3d
                         "Height of the foundation. Units: mm.");
     }
     prm.leave_subsection();
+  }
+
+
+
+  bool
+  GeometryParameters::hemispherical_end() const
+  {
+    return std::abs(fillet_radius - punch_radius) <= 1e-12 * punch_radius;
   }
 
 
@@ -97,11 +110,13 @@ namespace Punch3d
     AssertThrow(punch_radius > 0. && punch_height > 0. &&
                   foundation_height > 0.,
                 ExcMessage("Geometry: radii and heights must be positive."));
-    AssertThrow(fillet_radius > 0. && fillet_radius < 0.4 * punch_radius &&
-                  3. * fillet_radius < punch_height,
+    AssertThrow((fillet_radius > 0. && fillet_radius < 0.4 * punch_radius &&
+                 3. * fillet_radius < punch_height) ||
+                  (hemispherical_end() && punch_height > 1.5 * punch_radius),
                 ExcMessage("Geometry: 'Fillet radius' must be positive and "
                            "less than 0.4 times the punch radius and a third "
-                           "of its height."));
+                           "of its height, or equal to the punch radius "
+                           "with a height above 1.5 punch radii."));
     AssertThrow(foundation_radius > punch_radius,
                 ExcMessage("Geometry: 'Foundation radius' must exceed the "
                            "punch radius."));
@@ -137,7 +152,9 @@ namespace Punch3d
                         "Further graded refinements toward the contact "
                         "edge, the strip from the start of the fillet to "
                         "half the fillet radius beyond it, where the "
-                        "pressure peaks.");
+                        "pressure peaks (with a hemispherical end: from "
+                        "the axis to 1.25 times the Hertz contact "
+                        "radius).");
       prm.declare_entry("Grading factor",
                         "2.0",
                         Patterns::Double(0.5),
@@ -222,6 +239,10 @@ namespace Punch3d
 
     model.parse_parameters(prm);
     geometry.parse_parameters(prm);
+    AssertThrow(!(model.three_d && geometry.hemispherical_end()),
+                ExcMessage("Geometry: the hemispherical end ('Fillet radius' "
+                           "= 'Punch radius') is available in the "
+                           "axisymmetric model only."));
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);
     punch_material.parse_parameters(prm, "Punch material");

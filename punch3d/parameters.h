@@ -35,6 +35,12 @@ namespace Punch3d
     double foundation_radius;
     /** Foundation height (mm). */
     double foundation_height;
+
+    /** @brief Whether the fillet radius equals the punch radius: the
+     * punch then ends in a hemisphere, a Hertz point contact (a
+     * verification case, not the benchmark). */
+    bool
+    hemispherical_end() const;
   };
 
   /** Subsection "Mesh". */

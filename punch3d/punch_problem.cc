@@ -136,40 +136,79 @@ namespace Punch3d
         Point<2>(0., 0.),
         Point<2>(Rf, Hf));
 
-      const double                s        = std::sqrt(0.5);
-      const double                z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
-      const std::vector<Point<2>> vertices = {
-        {0., Hf},                          // 0: axis, contact face
-        {b, Hf},                           // 1: start of the fillet
-        {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
-        {a, Hf + rho},                     // 3: end of the fillet
-        {0., Hf + 2. * rho},               // 4
-        {b - 1.5 * rho, Hf + 2. * rho},    // 5
-        {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
-        {a, Hf + 2.5 * rho},               // 7
-        {0., z_mid},                       // 8
-        {b - 1.5 * rho, z_mid},            // 9
-        {b - 0.25 * rho, z_mid},           // 10
-        {a, z_mid},                        // 11
-        {0., Hf + Hp},                     // 12
-        {b - 1.5 * rho, Hf + Hp},          // 13
-        {b - 0.25 * rho, Hf + Hp},         // 14
-        {a, Hf + Hp}};                     // 15
-      const std::vector<std::vector<unsigned int>> cell_vertices = {
-        {0, 1, 4, 5},
-        {1, 2, 5, 6},
-        {2, 3, 6, 7},
-        {4, 5, 8, 9},
-        {5, 6, 9, 10},
-        {6, 7, 10, 11},
-        {8, 9, 12, 13},
-        {9, 10, 13, 14},
-        {10, 11, 14, 15}};
-      std::vector<CellData<2>> cells(cell_vertices.size());
-      for (unsigned int c = 0; c < cells.size(); ++c)
-        for (unsigned int v = 0; v < 4; ++v)
-          cells[c].vertices[v] = cell_vertices[c][v];
-      punch.create_triangulation(vertices, cells, SubCellData());
+      const double s = std::sqrt(0.5);
+      if (geometry.hemispherical_end())
+        {
+          // A quarter disc of three cells about the hemisphere's centre
+          // (two along the arc, one at the centre), then two columns of
+          // two cells above it.
+          const double                z_mid    = Hf + 0.5 * (a + Hp);
+          const std::vector<Point<2>> vertices = {
+            {0., Hf},                  // 0: axis, bottom of the arc
+            {s * a, Hf + a - s * a},   // 1: middle of the arc
+            {a, Hf + a},               // 2: end of the arc
+            {0., Hf + 0.5 * a},        // 3
+            {0.45 * a, Hf + 0.55 * a}, // 4
+            {0.5 * a, Hf + a},         // 5
+            {0., Hf + a},              // 6: centre of the hemisphere
+            {0., z_mid},               // 7
+            {0.5 * a, z_mid},          // 8
+            {a, z_mid},                // 9
+            {0., Hf + Hp},             // 10
+            {0.5 * a, Hf + Hp},        // 11
+            {a, Hf + Hp}};             // 12
+          const std::vector<std::vector<unsigned int>> cell_vertices = {
+            {0, 1, 3, 4},
+            {1, 2, 4, 5},
+            {3, 4, 6, 5},
+            {6, 5, 7, 8},
+            {5, 2, 8, 9},
+            {7, 8, 10, 11},
+            {8, 9, 11, 12}};
+          std::vector<CellData<2>> cells(cell_vertices.size());
+          for (unsigned int c = 0; c < cells.size(); ++c)
+            for (unsigned int v = 0; v < 4; ++v)
+              cells[c].vertices[v] = cell_vertices[c][v];
+          // Neighbours must traverse their shared lines alike.
+          GridTools::consistently_order_cells(cells);
+          punch.create_triangulation(vertices, cells, SubCellData());
+        }
+      else
+        {
+          const double                z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
+          const std::vector<Point<2>> vertices = {
+            {0., Hf},                          // 0: axis, contact face
+            {b, Hf},                           // 1: start of the fillet
+            {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
+            {a, Hf + rho},                     // 3: end of the fillet
+            {0., Hf + 2. * rho},               // 4
+            {b - 1.5 * rho, Hf + 2. * rho},    // 5
+            {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
+            {a, Hf + 2.5 * rho},               // 7
+            {0., z_mid},                       // 8
+            {b - 1.5 * rho, z_mid},            // 9
+            {b - 0.25 * rho, z_mid},           // 10
+            {a, z_mid},                        // 11
+            {0., Hf + Hp},                     // 12
+            {b - 1.5 * rho, Hf + Hp},          // 13
+            {b - 0.25 * rho, Hf + Hp},         // 14
+            {a, Hf + Hp}};                     // 15
+          const std::vector<std::vector<unsigned int>> cell_vertices = {
+            {0, 1, 4, 5},
+            {1, 2, 5, 6},
+            {2, 3, 6, 7},
+            {4, 5, 8, 9},
+            {5, 6, 9, 10},
+            {6, 7, 10, 11},
+            {8, 9, 12, 13},
+            {9, 10, 13, 14},
+            {10, 11, 14, 15}};
+          std::vector<CellData<2>> cells(cell_vertices.size());
+          for (unsigned int c = 0; c < cells.size(); ++c)
+            for (unsigned int v = 0; v < 4; ++v)
+              cells[c].vertices[v] = cell_vertices[c][v];
+          punch.create_triangulation(vertices, cells, SubCellData());
+        }
 
       const double tolerance = 1e-8 * a;
       for (const auto &cell : foundation.active_cell_iterators())
@@ -273,9 +312,14 @@ namespace Punch3d
                                          band(0., a),
                                          parameters.mesh.n_contact_refinements,
                                          parameters.mesh.grading_factor);
+    // A hemispherical end has its contact edge at the Hertz radius.
+    const bool   sphere     = geometry.hemispherical_end();
+    const double edge_start = sphere ? 0. : b;
+    const double edge_end   = sphere ?
+                                1.25 * half_space_reference().contact_radius() :
+                                b + 0.5 * geometry.fillet_radius;
     Common::Geometry::refine_toward<dim>(triangulation,
-                                         band(b,
-                                              b + 0.5 * geometry.fillet_radius),
+                                         band(edge_start, edge_end),
                                          parameters.mesh.n_edge_refinements,
                                          parameters.mesh.grading_factor);
   }
@@ -550,7 +594,12 @@ namespace Punch3d
     const auto    fe_reference = Common::Analytic::fenet_punch_fe_reference();
     const double  mu           = parameters.contact.friction_coefficient;
     const bool    friction     = enforcement.has_friction();
-    const double  uz_marc      = marc_axis_displacement(mu);
+    // The MSC.Marc and Abaqus results are those of the benchmark's
+    // geometry; a hemispherical end is compared with Hertz only.
+    const bool   benchmark_geometry = !parameters.geometry.hemispherical_end();
+    const double uz_marc            = benchmark_geometry ?
+                                        marc_axis_displacement(mu) :
+                                        std::numeric_limits<double>::quiet_NaN();
     // The MSC.Marc pressure nearest the axis, r = 0.5 mm (mu = 0.1; the
     // frictionless curve is not tabulated, and FE centre pressures differ
     // by less than their spread).
@@ -599,8 +648,10 @@ namespace Punch3d
     console.print_quantity("Pressure at the centre",
                            "MPa",
                            r.centre_pressure,
-                           "p/p_MARC",
-                           r.centre_pressure / p_centre_marc);
+                           benchmark_geometry ? "p/p_MARC" : "p/p_Hertz",
+                           r.centre_pressure / (benchmark_geometry ?
+                                                  p_centre_marc :
+                                                  half_space.pressure(0.)));
     console.print_quantity("Contact radius",
                            "mm",
                            r.contact_radius,
@@ -655,18 +706,23 @@ namespace Punch3d
         for (const auto &p : surface)
           displacements << p.position[0] << ',' << p.displacement[0] << ','
                         << p.displacement[1] << '\n';
-        std::ofstream marc_displacements(
-          out.path("marc_surface_displacement.csv"));
-        marc_displacements << "r,u_r_mu0,u_z_mu0,u_r_mu01,u_z_mu01\n";
-        for (const auto &p : marc_surface)
-          marc_displacements << p.r << ',' << p.ur_mu0 << ',' << p.uz_mu0 << ','
-                             << p.ur_mu01 << ',' << p.uz_mu01 << '\n';
-        std::ofstream curves(out.path("fe_reference.csv"));
-        curves << "r,pressure_marc,pressure_abaqus,tangential_traction_marc,"
-                  "tangential_traction_abaqus\n";
-        for (const auto &p : fe_reference)
-          curves << p.r << ',' << p.pressure_marc << ',' << p.pressure_abaqus
-                 << ',' << p.traction_marc << ',' << p.traction_abaqus << '\n';
+        if (benchmark_geometry)
+          {
+            std::ofstream marc_displacements(
+              out.path("marc_surface_displacement.csv"));
+            marc_displacements << "r,u_r_mu0,u_z_mu0,u_r_mu01,u_z_mu01\n";
+            for (const auto &p : marc_surface)
+              marc_displacements << p.r << ',' << p.ur_mu0 << ',' << p.uz_mu0
+                                 << ',' << p.ur_mu01 << ',' << p.uz_mu01
+                                 << '\n';
+            std::ofstream curves(out.path("fe_reference.csv"));
+            curves << "r,pressure_marc,pressure_abaqus,"
+                      "tangential_traction_marc,tangential_traction_abaqus\n";
+            for (const auto &p : fe_reference)
+              curves << p.r << ',' << p.pressure_marc << ','
+                     << p.pressure_abaqus << ',' << p.traction_marc << ','
+                     << p.traction_abaqus << '\n';
+          }
       }
 
     if (out.write_plots && root)
@@ -685,13 +741,19 @@ namespace Punch3d
 
         Common::IO::PlotDescription pressure;
         pressure.title =
-          "Contact pressure, rounded punch (benchmark 2), mu = " +
+          (benchmark_geometry ?
+             "Contact pressure, rounded punch (benchmark 2), mu = " :
+             "Contact pressure, hemispherical punch (Hertz), mu = ") +
           mu_stream.str();
         pressure.x_label = x_label;
         pressure.y_label = "contact pressure [MPa]";
         pressure.x_range = x_range;
         pressure.series  = {
-           {"reference_profile.csv", 1, 2, "half-space", "lines lw 2"},
+           {"reference_profile.csv",
+            1,
+            2,
+           benchmark_geometry ? "half-space" : "Hertz (half-space)",
+            "lines lw 2"},
            {"fe_reference.csv",
             1,
             2,
@@ -699,6 +761,19 @@ namespace Punch3d
             "points pt 6 ps 1.5"},
            {"fe_reference.csv", 1, 3, "Abaqus (mu = 0.1)", "points pt 4 ps 1.5"},
            {"contact_profile.csv", 1, 2, fe_label, fe_style}};
+        // Only the benchmark's geometry has MSC.Marc and Abaqus curves.
+        const auto drop_fe_references = [&](auto &series) {
+          if (!benchmark_geometry)
+            series.erase(
+              std::remove_if(series.begin(),
+                             series.end(),
+                             [](const auto &curve) {
+                               return curve.data_file.rfind("fe_", 0) == 0 ||
+                                      curve.data_file.rfind("marc_", 0) == 0;
+                             }),
+              series.end());
+        };
+        drop_fe_references(pressure.series);
         plots.emplace_back("contact_pressure", pressure);
 
         Common::IO::PlotDescription traction;
@@ -715,6 +790,7 @@ namespace Punch3d
             "points pt 6 ps 1.5"},
            {"fe_reference.csv", 1, 5, "Abaqus (mu = 0.1)", "points pt 4 ps 1.5"},
            {"contact_profile.csv", 1, 3, fe_label, fe_style}};
+        drop_fe_references(traction.series);
         plots.emplace_back("tangential_traction", traction);
 
         Common::IO::PlotDescription slip;
@@ -752,6 +828,7 @@ namespace Punch3d
                                     "points pt 6 ps 1.5"});
             plot.series.push_back(
               {"surface_displacement.csv", 1, 2 + c, fe_label, "lines lw 2"});
+            drop_fe_references(plot.series);
             plots.emplace_back("surface_displacement_" + name, plot);
           }
 
@@ -820,11 +897,16 @@ namespace Punch3d
     JsonObject reference;
     reference
       .set("source",
-           "half-space solution of a rounded flat punch (REFERENCES.md 2.1); "
-           "MSC.Marc/Abaqus curves of NAFEMS R0094 (REFERENCES.md 2.2)")
+           benchmark_geometry ?
+             "half-space solution of a rounded flat punch (REFERENCES.md "
+             "2.1); MSC.Marc/Abaqus curves of NAFEMS R0094 (REFERENCES.md "
+             "2.2)" :
+             "Hertz point contact: the half-space solution of REFERENCES.md "
+             "2.1 with flat radius b = 0")
       .set("half_space_contact_radius_mm", half_space.contact_radius())
-      .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.))
-      .set("marc_pressure_at_centre_MPa", p_centre_marc);
+      .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.));
+    if (benchmark_geometry)
+      reference.set("marc_pressure_at_centre_MPa", p_centre_marc);
     if (marc_has_mu)
       {
         reference.set("marc_foundation_top_axis_uz_mm", uz_marc);
@@ -838,9 +920,13 @@ namespace Punch3d
       }
 
     JsonObject ratios;
-    ratios.set("pressure_at_centre_marc", r.centre_pressure / p_centre_marc)
+    ratios
+      .set("pressure_at_centre_half_space",
+           r.centre_pressure / half_space.pressure(0.))
       .set("contact_radius_half_space",
            r.contact_radius / half_space.contact_radius());
+    if (benchmark_geometry)
+      ratios.set("pressure_at_centre_marc", r.centre_pressure / p_centre_marc);
     if (marc_has_mu)
       {
         ratios.set("foundation_top_axis_uz_marc",
@@ -876,7 +962,10 @@ namespace Punch3d
     console.stream() << "punch3d: rounded punch on a cylindrical foundation "
                         "("
                      << (dim == 2 ? "axisymmetric" : "3D quarter model")
-                     << (parameters.model.rigid_punch ? ", rigid punch)" : ")")
+                     << (parameters.model.rigid_punch ? ", rigid punch" : "")
+                     << (parameters.geometry.hemispherical_end() ?
+                           ", hemispherical end)" :
+                           ")")
                      << std::endl;
     make_grid();
     setup_system();

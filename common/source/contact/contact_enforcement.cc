@@ -237,6 +237,23 @@ namespace Common
                              has_friction() ? PointStatus::stick :
                                               PointStatus::slip);
         }
+      // Close the nearest node that carries a multiplier if no touching
+      // one does (every rank holds every row, so all decide alike).
+      unsigned int nearest = numbers::invalid_unsigned_int;
+      bool         held    = false;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          const MortarRow<dim> &row = coupling.row(j);
+          if (!row.has_partner || row.weight <= 0.)
+            continue;
+          held = held || state.status[j] != PointStatus::open;
+          if (nearest == numbers::invalid_unsigned_int ||
+              row.nodal_gap < coupling.row(nearest).nodal_gap)
+            nearest = j;
+        }
+      if (!held && nearest != numbers::invalid_unsigned_int)
+        state.status[nearest] =
+          has_friction() ? PointStatus::stick : PointStatus::slip;
       std::fill(state.pressures.begin(), state.pressures.end(), 0.);
       std::fill(state.tangential_tractions.begin(),
                 state.tangential_tractions.end(),

@@ -95,7 +95,12 @@ namespace Common
        * @brief Start the active set from the geometry of the coupling:
        * nodes that touch (pointwise gap <= 1e-8 h) are active. A body that
        * only touches its partner is thereby held from the first iteration
-       * on, and the first linear system is not singular.
+       * on, and the first linear system is not singular. If no touching
+       * node carries a multiplier (positive weight; e.g. a sphere that
+       * touches at the axis node of an axisymmetric Q2 mesh, which has no
+       * ring measure), the paired node of positive weight with the
+       * smallest gap starts active too; the semismooth Newton iteration
+       * opens it if it carries no pressure.
        */
       void
       initialize_active_set();
