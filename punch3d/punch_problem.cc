@@ -136,79 +136,78 @@ namespace Punch3d
         Point<2>(0., 0.),
         Point<2>(Rf, Hf));
 
-      const double s = std::sqrt(0.5);
+      const double                           s = std::sqrt(0.5);
+      std::vector<Point<2>>                  vertices;
+      std::vector<std::vector<unsigned int>> cell_vertices;
       if (geometry.hemispherical_end())
         {
           // A quarter disc of three cells about the hemisphere's centre
           // (two along the arc, one at the centre), then two columns of
-          // two cells above it.
-          const double                z_mid    = Hf + 0.5 * (a + Hp);
-          const std::vector<Point<2>> vertices = {
-            {0., Hf},                  // 0: axis, bottom of the arc
-            {s * a, Hf + a - s * a},   // 1: middle of the arc
-            {a, Hf + a},               // 2: end of the arc
-            {0., Hf + 0.5 * a},        // 3
-            {0.45 * a, Hf + 0.55 * a}, // 4
-            {0.5 * a, Hf + a},         // 5
-            {0., Hf + a},              // 6: centre of the hemisphere
-            {0., z_mid},               // 7
-            {0.5 * a, z_mid},          // 8
-            {a, z_mid},                // 9
-            {0., Hf + Hp},             // 10
-            {0.5 * a, Hf + Hp},        // 11
-            {a, Hf + Hp}};             // 12
-          const std::vector<std::vector<unsigned int>> cell_vertices = {
-            {0, 1, 3, 4},
-            {1, 2, 4, 5},
-            {3, 4, 6, 5},
-            {6, 5, 7, 8},
-            {5, 2, 8, 9},
-            {7, 8, 10, 11},
-            {8, 9, 11, 12}};
-          std::vector<CellData<2>> cells(cell_vertices.size());
-          for (unsigned int c = 0; c < cells.size(); ++c)
-            for (unsigned int v = 0; v < 4; ++v)
-              cells[c].vertices[v] = cell_vertices[c][v];
-          // Neighbours must traverse their shared lines alike.
-          GridTools::consistently_order_cells(cells);
-          punch.create_triangulation(vertices, cells, SubCellData());
+          // two cells above it. Vertices 0 to 2: the arc from the axis to
+          // the side; 3 to 5: the inner cell's corners; 6: the centre;
+          // then the rows z_mid and the top, from the axis outward.
+          const double z_mid = Hf + 0.5 * (a + Hp);
+          vertices           = {{0., Hf},
+                                {s * a, Hf + a - s * a},
+                                {a, Hf + a},
+                                {0., Hf + 0.5 * a},
+                                {0.45 * a, Hf + 0.55 * a},
+                                {0.5 * a, Hf + a},
+                                {0., Hf + a},
+                                {0., z_mid},
+                                {0.5 * a, z_mid},
+                                {a, z_mid},
+                                {0., Hf + Hp},
+                                {0.5 * a, Hf + Hp},
+                                {a, Hf + Hp}};
+          cell_vertices      = {{0, 1, 3, 4},
+                                {1, 2, 4, 5},
+                                {3, 4, 6, 5},
+                                {6, 5, 7, 8},
+                                {5, 2, 8, 9},
+                                {7, 8, 10, 11},
+                                {8, 9, 11, 12}};
         }
       else
         {
-          const double                z_mid    = Hf + 0.5 * (2.5 * rho + Hp);
-          const std::vector<Point<2>> vertices = {
-            {0., Hf},                          // 0: axis, contact face
-            {b, Hf},                           // 1: start of the fillet
-            {b + s * rho, Hf + rho - s * rho}, // 2: middle of the fillet
-            {a, Hf + rho},                     // 3: end of the fillet
-            {0., Hf + 2. * rho},               // 4
-            {b - 1.5 * rho, Hf + 2. * rho},    // 5
-            {b - 0.25 * rho, Hf + 2.25 * rho}, // 6
-            {a, Hf + 2.5 * rho},               // 7
-            {0., z_mid},                       // 8
-            {b - 1.5 * rho, z_mid},            // 9
-            {b - 0.25 * rho, z_mid},           // 10
-            {a, z_mid},                        // 11
-            {0., Hf + Hp},                     // 12
-            {b - 1.5 * rho, Hf + Hp},          // 13
-            {b - 0.25 * rho, Hf + Hp},         // 14
-            {a, Hf + Hp}};                     // 15
-          const std::vector<std::vector<unsigned int>> cell_vertices = {
-            {0, 1, 4, 5},
-            {1, 2, 5, 6},
-            {2, 3, 6, 7},
-            {4, 5, 8, 9},
-            {5, 6, 9, 10},
-            {6, 7, 10, 11},
-            {8, 9, 12, 13},
-            {9, 10, 13, 14},
-            {10, 11, 14, 15}};
-          std::vector<CellData<2>> cells(cell_vertices.size());
-          for (unsigned int c = 0; c < cells.size(); ++c)
-            for (unsigned int v = 0; v < 4; ++v)
-              cells[c].vertices[v] = cell_vertices[c][v];
-          punch.create_triangulation(vertices, cells, SubCellData());
+          // Vertices 0 to 3: the axis, the start, middle and end of the
+          // fillet; then four rows from the axis outward.
+          const double z_mid = Hf + 0.5 * (2.5 * rho + Hp);
+          vertices           = {{0., Hf},
+                                {b, Hf},
+                                {b + s * rho, Hf + rho - s * rho},
+                                {a, Hf + rho},
+                                {0., Hf + 2. * rho},
+                                {b - 1.5 * rho, Hf + 2. * rho},
+                                {b - 0.25 * rho, Hf + 2.25 * rho},
+                                {a, Hf + 2.5 * rho},
+                                {0., z_mid},
+                                {b - 1.5 * rho, z_mid},
+                                {b - 0.25 * rho, z_mid},
+                                {a, z_mid},
+                                {0., Hf + Hp},
+                                {b - 1.5 * rho, Hf + Hp},
+                                {b - 0.25 * rho, Hf + Hp},
+                                {a, Hf + Hp}};
+          cell_vertices      = {{0, 1, 4, 5},
+                                {1, 2, 5, 6},
+                                {2, 3, 6, 7},
+                                {4, 5, 8, 9},
+                                {5, 6, 9, 10},
+                                {6, 7, 10, 11},
+                                {8, 9, 12, 13},
+                                {9, 10, 13, 14},
+                                {10, 11, 14, 15}};
         }
+      std::vector<CellData<2>> cells(cell_vertices.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        for (unsigned int v = 0; v < 4; ++v)
+          cells[c].vertices[v] = cell_vertices[c][v];
+      // Neighbours must traverse their shared lines alike (the fillet mesh
+      // is numbered so already).
+      if (geometry.hemispherical_end())
+        GridTools::consistently_order_cells(cells);
+      punch.create_triangulation(vertices, cells, SubCellData());
 
       const double tolerance = 1e-8 * a;
       for (const auto &cell : foundation.active_cell_iterators())
