@@ -305,8 +305,22 @@ namespace Common
           rows[j].has_partner =
             node_covered[j] && !weights[j].empty() && rows[j].weight > 0.;
           if (rows[j].has_partner)
-            rows[j].primary_weights.assign(weights[j].begin(),
-                                           weights[j].end());
+            {
+              rows[j].primary_weights.assign(weights[j].begin(),
+                                             weights[j].end());
+              // Exact operators of a covered node satisfy
+              // sum_k M_jk = int psi_j = D_j, since the primary shape
+              // functions sum to one: a translation of both bodies leaves
+              // the weighted gap unchanged, and the primary body receives
+              // the force the multipliers transmit. The segment quadrature
+              // of curved 3D faces meets this to about 1e-5 only; the rows
+              // are scaled to meet it exactly.
+              double row_sum = 0.;
+              for (const auto &entry : rows[j].primary_weights)
+                row_sum += entry.second;
+              for (auto &entry : rows[j].primary_weights)
+                entry.second *= rows[j].weight / row_sum;
+            }
           // The gap of the reference geometry once: later gaps add only
           // displacements, so their round-off scales with the displacement
           // and not with the coordinates.
@@ -394,12 +408,13 @@ namespace Common
             secondary->base_element().degree > 1 ? 4 : 1;
           // Face integrands are rational in the plane unless the faces are
           // parallelograms, so the rule goes well beyond the polynomial
-          // degree (contact_patch_test_03: uniform pressure to 8e-7 with
-          // Q1 on kite-shaped faces with 6 x 6 points, 3e-5 with 5 x 5,
-          // 5e-2 with a rule of degree + 2 points). For Q2 the
-          // sub-squares' straight edges dominate (3e-5 on arcs with
-          // 5 x 5 points or more), and 5 x 5 points integrate the products
-          // of Q2 shape functions on parallelograms exactly.
+          // degree (contact_patch_test_03, measured before the rows of M
+          // were scaled to sum to D: uniform pressure to 8e-7 with Q1 on
+          // kite-shaped faces with 6 x 6 points, 3e-5 with 5 x 5, 5e-2
+          // with a rule of degree + 2 points). For Q2 the sub-squares'
+          // straight edges dominate (3e-5 on arcs with 5 x 5 points or
+          // more, with or without the scaling), and 5 x 5 points integrate
+          // the products of Q2 shape functions on parallelograms exactly.
           const Quadrature<2> triangle_quadrature = collapsed_triangle_rule(
             std::max(secondary->base_element().degree,
                      primary->base_element().degree) > 1 ?
