@@ -70,8 +70,8 @@ namespace Punch3d
                         "punch radius and a third of the punch height. "
                         "Equal to the punch radius, the punch ends in a "
                         "hemisphere (Hertz point contact, a verification "
-                        "case of the axisymmetric model; the punch height "
-                        "must then exceed 1.5 punch radii). Units: mm.");
+                        "case of both models; the punch height must then "
+                        "exceed 1.5 punch radii). Units: mm.");
       prm.declare_entry("Foundation radius",
                         "100",
                         Patterns::Double(0.),
@@ -239,10 +239,6 @@ namespace Punch3d
 
     model.parse_parameters(prm);
     geometry.parse_parameters(prm);
-    AssertThrow(!(model.three_d && geometry.hemispherical_end()),
-                ExcMessage("Geometry: the hemispherical end ('Fillet radius' "
-                           "= 'Punch radius') is available in the "
-                           "axisymmetric model only."));
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);
     punch_material.parse_parameters(prm, "Punch material");

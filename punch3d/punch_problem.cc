@@ -151,7 +151,7 @@ namespace Punch3d
                                 {s * a, Hf + a - s * a},
                                 {a, Hf + a},
                                 {0., Hf + 0.5 * a},
-                                {0.45 * a, Hf + 0.55 * a},
+                                {0.5 * a, Hf + 0.5 * a},
                                 {0.5 * a, Hf + a},
                                 {0., Hf + a},
                                 {0., z_mid},
@@ -307,16 +307,17 @@ namespace Punch3d
         return std::sqrt(dr * dr + (p[1] - Hf) * (p[1] - Hf));
       };
     };
-    Common::Geometry::refine_toward<dim>(triangulation,
-                                         band(0., a),
-                                         parameters.mesh.n_contact_refinements,
-                                         parameters.mesh.grading_factor);
-    // A hemispherical end has its contact edge at the Hertz radius.
+    // A hemispherical end has its contact zone, and its edge, within the
+    // Hertz radius: both gradings aim at r <= 1.25 a_Hertz.
     const bool   sphere     = geometry.hemispherical_end();
     const double edge_start = sphere ? 0. : b;
     const double edge_end   = sphere ?
                                 1.25 * half_space_reference().contact_radius() :
                                 b + 0.5 * geometry.fillet_radius;
+    Common::Geometry::refine_toward<dim>(triangulation,
+                                         band(0., sphere ? edge_end : a),
+                                         parameters.mesh.n_contact_refinements,
+                                         parameters.mesh.grading_factor);
     Common::Geometry::refine_toward<dim>(triangulation,
                                          band(edge_start, edge_end),
                                          parameters.mesh.n_edge_refinements,
@@ -477,7 +478,8 @@ namespace Punch3d
       parameters.foundation_material.poisson_ratio,
       a - parameters.geometry.fillet_radius,
       parameters.geometry.fillet_radius,
-      parameters.loading.pressure * numbers::PI * a * a);
+      parameters.loading.pressure *
+        (loaded_area > 0. ? loaded_area : numbers::PI * a * a));
   }
 
 

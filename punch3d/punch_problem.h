@@ -89,7 +89,10 @@ namespace Punch3d
     setup_system();
     Common::Problems::ExternalLoad
     external_load() const;
-    /** Half-space solution for the full load. */
+    /** Half-space solution for the full load the model applies: the
+     * pressure times the discrete loaded area once setup_system() has
+     * measured it (in 3D the mapped quarter disc, with Q1 its chords),
+     * times pi a^2 before. */
     Common::Analytic::RoundedPunchHalfSpace
     half_space_reference() const;
 

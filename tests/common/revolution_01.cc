@@ -13,7 +13,11 @@
  * Jacobian at every quadrature point. (3) Both bodies revolved apart and
  * joined by join_bodies (common/geometry/two_body_meshes.h) must converge
  * in the same way: the join keeps the manifold ids of faces and lines and
- * the manifolds themselves.
+ * the manifolds themselves. (4) The lower half of the disc of radius 1
+ * about the origin (three cells of a quarter disc; the cell at the pole
+ * has an arc for its bottom edge, with a SphericalManifold) revolves into
+ * an eighth of a ball: volume pi/6 mm^3, sphere (id 1) pi/2 mm^2, top
+ * (id 2) and each symmetry plane pi/4 mm^2.
  */
 
 #include <common/geometry/revolution.h>
@@ -27,8 +31,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -134,6 +141,47 @@ make_rectangle(Triangulation<2> &meridian)
 
 
 
+/** The lower half of the disc of radius 1 mm about the origin: a quarter
+ * disc of three cells (at the pole, at the side, and the square at the
+ * centre); boundary ids 1 on the arc (SphericalManifold, id 0), 2 on top
+ * (y = 0). */
+void
+make_hemisphere(Triangulation<2> &meridian)
+{
+  const double                                   s        = std::sqrt(0.5);
+  const std::vector<Point<2>>                    vertices = {{0., -1.},
+                                                             {s, -s},
+                                                             {1., 0.},
+                                                             {0., -0.5},
+                                                             {0.5, -0.5},
+                                                             {0.5, 0.},
+                                                             {0., 0.}};
+  const std::vector<std::array<unsigned int, 4>> cell_vertices =
+    {{{0, 1, 3, 4}}, {{1, 2, 4, 5}}, {{3, 4, 6, 5}}};
+  std::vector<CellData<2>> cells(cell_vertices.size());
+  for (unsigned int c = 0; c < cells.size(); ++c)
+    for (unsigned int v = 0; v < 4; ++v)
+      cells[c].vertices[v] = cell_vertices[c][v];
+  GridTools::consistently_order_cells(cells);
+  meridian.create_triangulation(vertices, cells, SubCellData());
+  for (const auto &cell : meridian.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        {
+          const Point<2> c = cell->face(f)->center();
+          if (std::abs(c[1]) < 1e-12)
+            cell->face(f)->set_boundary_id(2);
+          else if (c[0] > 1e-12)
+            {
+              cell->face(f)->set_boundary_id(1);
+              cell->face(f)->set_manifold_id(0);
+            }
+        }
+  meridian.set_manifold(0, SphericalManifold<2>(Point<2>()));
+}
+
+
+
 /** The disc of radius 1 mm centred at r = 3 mm, boundary id @p id. */
 void
 make_disc(Triangulation<2> &meridian, const types::boundary_id id)
@@ -190,5 +238,15 @@ main()
            {6, 3. * pi * pi},
            {4, 6. + pi},
            {5, 6. + pi}});
+  }
+  {
+    Triangulation<2> meridian;
+    make_hemisphere(meridian);
+    Triangulation<3> tria;
+    Common::Geometry::revolve_quarter(meridian, 4, 5, 10, tria);
+    check(
+      "eighth of a ball",
+      tria,
+      {{-1, pi / 6.}, {1, pi / 2.}, {2, pi / 4.}, {4, pi / 4.}, {5, pi / 4.}});
   }
 }

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -120,6 +121,77 @@ namespace Common
         return m[0] < tolerance;
       };
 
+      // Meridian edges: endpoints, boundary id, manifold id, and the
+      // circle if the edge is an arc of a circle centred on the axis (it
+      // sweeps a sphere).
+      struct Edge
+      {
+        Point<2>           a, b;
+        bool               at_boundary;
+        types::boundary_id boundary_id;
+        types::manifold_id manifold_id;
+        bool               spherical = false;
+        Point<2>           centre;
+        double             radius = 0.;
+      };
+      std::vector<Edge> edges;
+      for (const auto &cell : meridian.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (!face->at_boundary() && cell->neighbor_index(f) < cell->index())
+              continue;
+            types::manifold_id id = face->manifold_id();
+            if (id != numbers::flat_manifold_id &&
+                dynamic_cast<const TransfiniteInterpolationManifold<2> *>(
+                  &meridian.get_manifold(id)) != nullptr)
+              id = numbers::flat_manifold_id;
+            Edge e;
+            e.a           = face->vertex(0);
+            e.b           = face->vertex(1);
+            e.at_boundary = face->at_boundary();
+            e.boundary_id =
+              face->at_boundary() ? face->boundary_id() : types::boundary_id(0);
+            e.manifold_id = id;
+            if (id != numbers::flat_manifold_id)
+              if (const auto *circle =
+                    dynamic_cast<const SphericalManifold<2> *>(
+                      &meridian.get_manifold(id)))
+                if (on_axis(circle->center))
+                  {
+                    e.spherical = true;
+                    e.centre    = circle->center;
+                    e.radius    = e.a.distance(e.centre);
+                  }
+            edges.push_back(e);
+          }
+      // True if @p p lies on edge e: on the segment, or, for an arc, on the
+      // circle and nearer the arc's midpoint than its ends are (the arcs of
+      // a coarse mesh are shorter than half a turn).
+      const auto on_edge = [&](const Point<2> &p, const Edge &e) {
+        if (!e.spherical)
+          return distance_to_segment(p, e.a, e.b) < tolerance;
+        Tensor<1, 2> to_middle = 0.5 * (e.a + e.b) - e.centre;
+        to_middle /= to_middle.norm();
+        const Point<2> middle = e.centre + e.radius * to_middle;
+        return std::abs(p.distance(e.centre) - e.radius) < tolerance &&
+               p.distance(middle) < e.a.distance(middle) + tolerance;
+      };
+      const auto find_edge = [&](const std::vector<Point<2>> &points,
+                                 const bool boundary_only) -> const Edge * {
+        for (const Edge &e : edges)
+          {
+            if (boundary_only && !e.at_boundary)
+              continue;
+            bool on = true;
+            for (const auto &p : points)
+              on = on && on_edge(p, e);
+            if (on)
+              return &e;
+          }
+        return nullptr;
+      };
+
       // Vertices: one on the axis, three (0, 45, 90 degrees) elsewhere.
       const std::vector<Point<2>>             &mv = meridian.get_vertices();
       std::vector<Point<3>>                    vertices;
@@ -139,22 +211,49 @@ namespace Common
               vertices.push_back(revolved_point(mv[v], angles[k]));
             }
 
-      // Inner-square vertices of a quarter disc of radius r_b at height y,
-      // one set per outer vertex b of an axis edge.
-      std::map<unsigned int, std::array<unsigned int, 3>> square;
-      const auto square_vertices = [&](const unsigned int b) {
-        auto it = square.find(b);
+      // Inner-square vertices of the quarter disc swept by the edge from
+      // axis vertex a to outer vertex b (radius r_b), one set per edge. A
+      // horizontal edge sweeps a plane disc; an arc of a circle centred on
+      // the axis a spherical cap, on which the vertices are then placed.
+      std::map<std::pair<unsigned int, unsigned int>,
+               std::array<unsigned int, 3>>
+                 square;
+      const auto square_vertices = [&](const unsigned int a,
+                                       const unsigned int b) {
+        auto it = square.find({a, b});
         if (it != square.end())
           return it->second;
-        const double                r = mv[b][0], y = mv[b][1];
+        std::function<double(double)> height;
+        if (std::abs(mv[a][1] - mv[b][1]) < tolerance)
+          height = [y = mv[b][1]](const double) {
+            return y;
+          };
+        else
+          {
+            const Edge *e = find_edge({mv[a], mv[b]}, false);
+            AssertThrow(e != nullptr && e->spherical,
+                        ExcMessage("revolve_quarter: the top and bottom "
+                                   "edges of a meridian cell on the axis "
+                                   "must be horizontal or arcs of circles "
+                                   "centred on the axis."));
+            const double side = mv[a][1] > e->centre[1] ? 1. : -1.;
+            height            = [e, side](const double rho) {
+              return e->centre[1] +
+                     side * std::sqrt(
+                              std::max(0., e->radius * e->radius - rho * rho));
+            };
+          }
+        const double                r = mv[b][0];
         std::array<unsigned int, 3> s;
         s[0] = vertices.size(); // on theta = 0
-        vertices.emplace_back(0.5 * r, y, 0.);
+        vertices.emplace_back(0.5 * r, height(0.5 * r), 0.);
         s[1] = vertices.size(); // on theta = 90 degrees
-        vertices.emplace_back(0., y, 0.5 * r);
+        vertices.emplace_back(0., height(0.5 * r), 0.5 * r);
         s[2] = vertices.size(); // the corner inside
-        vertices.emplace_back(0.4 * r, y, 0.4 * r);
-        square.emplace(b, s);
+        vertices.emplace_back(0.4 * r,
+                              height(0.4 * std::sqrt(2.) * r),
+                              0.4 * r);
+        square.emplace(std::make_pair(a, b), s);
         return s;
       };
 
@@ -216,15 +315,10 @@ namespace Common
             a = {{axis[0], axis[1]}};
             b = {{outer[0], outer[1]}};
           }
-          for (unsigned int l = 0; l < 2; ++l)
-            AssertThrow(std::abs(mv[a[l]][1] - mv[b[l]][1]) < tolerance,
-                        ExcMessage("revolve_quarter: a meridian cell on the "
-                                   "axis must have horizontal top and "
-                                   "bottom edges."));
           std::array<std::array<unsigned int, 7>, 2> level;
           for (unsigned int l = 0; l < 2; ++l)
             {
-              const auto s = square_vertices(b[l]);
+              const auto s = square_vertices(a[l], b[l]);
               // O, A, B, C, D, F, E: centre, square on theta = 0, on 90,
               // inner corner, arc at 0, 45 and 90 degrees.
               level[l] = {{ring[a[l]][0],
@@ -255,59 +349,41 @@ namespace Common
       result.clear();
       result.create_triangulation(vertices, cells, SubCellData());
 
-      // Meridian edges: endpoints, boundary id, manifold id.
-      struct Edge
-      {
-        Point<2>           a, b;
-        bool               at_boundary;
-        types::boundary_id boundary_id;
-        types::manifold_id manifold_id;
-      };
-      std::vector<Edge> edges;
-      for (const auto &cell : meridian.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary() && cell->neighbor_index(f) < cell->index())
-              continue;
-            types::manifold_id id = face->manifold_id();
-            if (id != numbers::flat_manifold_id &&
-                dynamic_cast<const TransfiniteInterpolationManifold<2> *>(
-                  &meridian.get_manifold(id)) != nullptr)
-              id = numbers::flat_manifold_id;
-            edges.push_back({face->vertex(0),
-                             face->vertex(1),
-                             face->at_boundary(),
-                             face->at_boundary() ? face->boundary_id() :
-                                                   types::boundary_id(0),
-                             id});
-          }
-      const auto find_edge = [&](const std::vector<Point<2>> &points,
-                                 const bool boundary_only) -> const Edge * {
-        for (const Edge &e : edges)
-          {
-            if (boundary_only && !e.at_boundary)
-              continue;
-            bool on = true;
-            for (const auto &p : points)
-              on = on && distance_to_segment(p, e.a, e.b) < tolerance;
-            if (on)
-              return &e;
-          }
-        return nullptr;
-      };
       const auto same = [&](const Point<2> &p, const Point<2> &q) {
         return p.distance(q) < tolerance;
       };
 
       // Manifolds: revolved copies of the meridian manifolds in use (flat
-      // included), numbered from first_manifold_id.
+      // included), and a sphere for each arc centred on the axis, numbered
+      // from first_manifold_id.
       std::map<types::manifold_id, types::manifold_id> revolved_id;
+      std::map<types::manifold_id, types::manifold_id> sphere_id;
+      const auto                                       next_id = [&]() {
+        return static_cast<types::manifold_id>(
+          first_manifold_id + revolved_id.size() + sphere_id.size());
+      };
+      const auto sphere = [&](const Edge &e) {
+        auto it = sphere_id.find(e.manifold_id);
+        if (it != sphere_id.end())
+          return it->second;
+        const types::manifold_id id = next_id();
+        sphere_id.emplace(e.manifold_id, id);
+        result.set_manifold(id,
+                            SphericalManifold<3>(
+                              Point<3>(0., e.centre[1], 0.)));
+        return id;
+      };
+      // The spherical edge that carries all of @p points, if any.
+      const auto on_sphere =
+        [&](const std::vector<Point<2>> &points) -> const Edge * {
+        const Edge *e = find_edge(points, false);
+        return e != nullptr && e->spherical ? e : nullptr;
+      };
       const auto revolved = [&](const types::manifold_id meridian_id) {
         auto it = revolved_id.find(meridian_id);
         if (it != revolved_id.end())
           return it->second;
-        const types::manifold_id id = first_manifold_id + revolved_id.size();
+        const types::manifold_id id = next_id();
         revolved_id.emplace(meridian_id, id);
         if (meridian_id == numbers::flat_manifold_id)
           result.set_manifold(id, RevolvedManifold(FlatManifold<2>()));
@@ -329,10 +405,12 @@ namespace Common
               const auto     line = cell->line(l);
               const Point<2> m0   = meridian_point(line->vertex(0));
               const Point<2> m1   = meridian_point(line->vertex(1));
-              if (on_axis(m0) || on_axis(m1))
-                line->set_manifold_id(numbers::flat_manifold_id);
-              else if (same(m0, m1)) // an arc about the axis
+              if (same(m0, m1)) // an arc about the axis
                 line->set_manifold_id(revolved(numbers::flat_manifold_id));
+              else if (const Edge *e = on_sphere({m0, m1}))
+                line->set_manifold_id(sphere(*e));
+              else if (on_axis(m0) || on_axis(m1))
+                line->set_manifold_id(numbers::flat_manifold_id);
               else if (std::abs(angle(line->vertex(0)) -
                                 angle(line->vertex(1))) < 1e-12)
                 {
@@ -363,7 +441,9 @@ namespace Common
                   y_min     = std::min(y_min, m[i][1]);
                   y_max     = std::max(y_max, m[i][1]);
                 }
-              if (axis)
+              if (const Edge *e = on_sphere(m))
+                face->set_manifold_id(sphere(*e));
+              else if (axis)
                 face->set_manifold_id(numbers::flat_manifold_id);
               else if (theta_max - theta_min < 1e-12)
                 ; // a meridian plane

@@ -58,16 +58,23 @@ namespace Common
      * y axial) through 90 degrees about the y axis into @p result.
      *
      * A meridian cell away from the axis becomes two hexahedra (0 to 45
-     * and 45 to 90 degrees); a cell with an edge on the axis, which must be
-     * a rectangle (horizontal top and bottom), becomes the three cells of a
-     * quarter disc (an inner square and two cells up to the arc) per layer.
-     * Cells with a single vertex on the axis are not allowed. Material ids
+     * and 45 to 90 degrees); a cell with an edge on the axis becomes the
+     * three cells of a quarter disc (an inner square and two cells up to
+     * the arc) per layer. Its top and bottom edges must be horizontal (the
+     * layer is bounded by plane discs) or arcs of circles centred on the
+     * axis, with a SphericalManifold<2> (the pole of a sphere: the layer is
+     * bounded by a spherical cap, on which the inner square's vertices are
+     * placed). Cells with a single vertex on the axis are not allowed.
+     * Material ids
      * are kept; boundary faces take the boundary id of the meridian edge
      * they are swept from, and the symmetry planes @p plane_z0_id (z = 0)
      * and @p plane_x0_id (x = 0). Faces and lines of revolution get a
      * RevolvedManifold of their meridian edge's manifold (ids from
      * @p first_manifold_id on; a transfinite meridian manifold counts as
-     * flat); cells and plane faces stay flat, so that their new points and
+     * flat); faces and lines that lie on the sphere swept by such an arc
+     * get a SphericalManifold<3> about its centre instead (except circles
+     * about the axis, which stay revolved); cells and plane faces stay
+     * flat, so that their new points and
      * mapping support points interpolate the curved faces and lines; a Q2
      * mapping then converges to the exact volume at order 4.
      */
