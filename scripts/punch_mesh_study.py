@@ -13,9 +13,19 @@ multiplier run (the self-convergence reference; the half-space and MSC.Marc valu
 beside them). Writes punch_mesh_study.csv and log-log plots of those
 errors against wall time.
 
+A second series runs the same file on uniform meshes (no local
+refinement; 'Number of global refinements' = 2 to 5, cells of 6.25 to
+0.78 mm), Q1 and Q2 with Lagrange multipliers, as a coarse reference
+model would be meshed: the FE references of the benchmark report have
+nodes 2.6 to 4 mm apart along the contact. It records the centre pressure
+and u_z against the cell size and writes uniform_mesh_study.csv and the
+plots centre_pressure_vs_h.png and uz_vs_h.png, with the MSC.Marc values
+on the same axes.
+
 Usage: scripts/punch_mesh_study.py [--build DIR] [--out DIR] [--quick]
            [--levels 3 4 5 6] [--degrees 1 2]
            [--enforcements lm penalty:1e5 penalty:1e6]
+           [--uniform-levels 2 3 4 5]
 """
 import argparse
 import os
@@ -53,6 +63,62 @@ def run_case(app, degree, level, enforcement, out_dir):
         "half_space_contact_radius_mm": s["reference"]["half_space_contact_radius_mm"],
         "marc_uz_mm": s["reference"].get("marc_foundation_top_axis_uz_mm", float("nan")),
     }
+
+
+def run_uniform_case(app, degree, level, out_dir):
+    case_dir = os.path.join(out_dir, "runs", f"q{degree}_uniform{level}")
+    s, wall = run_variant(app, PRODUCTION, case_dir, {
+        "Contact": contact_overrides("lm"),
+        "Mesh": {"Element degree": degree,
+                 "Number of global refinements": level,
+                 "Number of contact refinements": 0,
+                 "Number of edge refinements": 0}})
+    r = s["results"]
+    return {
+        "degree": degree,
+        "global_refinements": level,
+        "n_dofs": s["mesh"]["n_dofs"],
+        "h_mm": s["mesh"]["smallest_cell_in_contact_zone_mm"],
+        "wall_time_s": round(wall, 3),
+        "pressure_at_centre_MPa": r["pressure_at_centre_MPa"],
+        "centre_node_radius_mm": r["centre_node_radius_mm"],
+        "contact_radius_mm": r["contact_radius_mm"],
+        "foundation_top_axis_uz_mm": r["foundation_top_axis_uz_mm"],
+        "marc_pressure_at_centre_MPa": s["reference"]["marc_pressure_at_centre_MPa"],
+        "marc_uz_mm": s["reference"]["marc_foundation_top_axis_uz_mm"],
+    }
+
+
+def write_uniform_plots(out_dir, rows, degrees, converged):
+    """Centre pressure and u_z against the cell size on uniform meshes, one
+    curve per degree, with MSC.Marc's value (a horizontal line) and the
+    converged value of the graded Q2 study."""
+    for d in degrees:
+        with open(os.path.join(out_dir, f"uniform_q{d}.csv"), "w") as f:
+            f.write("h_mm,pressure_at_centre_MPa,foundation_top_axis_uz_mm\n")
+            for r in rows:
+                if r["degree"] == d:
+                    f.write(f"{r['h_mm']},{r['pressure_at_centre_MPa']},"
+                            f"{r['foundation_top_axis_uz_mm']}\n")
+    marc = rows[0]
+    for stem, col, quantity, unit, key, marc_value in (
+            ("centre_pressure_vs_h", 2, "pressure at the centre", "MPa",
+             "pressure_at_centre_MPa", marc["marc_pressure_at_centre_MPa"]),
+            ("uz_vs_h", 3, "u_z of the foundation top on the axis", "mm",
+             "foundation_top_axis_uz_mm", marc["marc_uz_mm"])):
+        series = [f"'uniform_q{d}.csv' using 1:{col} with linespoints lw 2 pt 7 "
+                  f"lc rgb '{COLOURS[i % len(COLOURS)]}' title \"Q{d}, uniform mesh\""
+                  for i, d in enumerate(degrees)]
+        series.append(f"{marc_value} with lines lw 2 dt 2 lc rgb 'black' title \"MSC.Marc\"")
+        if converged is not None:
+            series.append(f"{converged[key]} with lines lw 1 dt 3 lc rgb '#666666' "
+                          f"title \"converged (graded Q2, finest level)\"")
+        loglog_plot(out_dir, stem,
+                    f"Benchmark 2, mu = 0, uniform meshes: {quantity}",
+                    "cell size along the contact [mm]", f"{quantity} [{unit}]", series,
+                    extra="set key outside below center horizontal\n"
+                          "set xrange [8:0.5] reverse\nset xtics (0.5, 1, 2, 4, 8)\n"
+                          "set samples 200\n", logscale="x")
 
 
 COLOURS = ["#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"]
@@ -94,9 +160,12 @@ def main():
     parser.add_argument("--levels", type=int, nargs="+", default=[3, 4, 5, 6, 7])
     parser.add_argument("--degrees", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--enforcements", nargs="+", default=["lm", "penalty:1e5", "penalty:1e6"])
+    parser.add_argument("--uniform-levels", type=int, nargs="*", default=[2, 3, 4, 5],
+                        help="global refinements of the uniform-mesh series (none: skip it)")
     args = parser.parse_args()
     if args.quick:
         args.levels = [l for l in args.levels if l <= 5]
+        args.uniform_levels = [l for l in args.uniform_levels if l <= 4]
     if len(args.levels) < 3:
         sys.exit("punch_mesh_study: give at least three levels")
 
@@ -142,6 +211,27 @@ def main():
     write_plots(args.out, rows, args.degrees, args.enforcements)
     print(f"table: {table}")
     print(f"plots: {args.out}/error_peak_vs_time.png, {args.out}/error_uz_vs_time.png")
+
+    if args.uniform_levels:
+        uniform = []
+        for d in args.degrees:
+            for l in args.uniform_levels:
+                print(f"  [{time.time() - start:6.1f} s] uniform mesh: Q{d}, "
+                      f"{l} global refinements", flush=True)
+                uniform.append(run_uniform_case(app, d, l, args.out))
+        converged = finest if finest["enforcement"] == "lm" else None
+        print("uniform meshes, Lagrange multipliers:")
+        print("degree  refinements  h[mm]   n_dofs  wall[s]  p(0)[MPa] (node r[mm])  u_z[mm]")
+        for r in uniform:
+            print(f"Q{r['degree']:<6d} {r['global_refinements']:11d} {r['h_mm']:6.3f} {r['n_dofs']:8d} "
+                  f"{r['wall_time_s']:8.2f}  {r['pressure_at_centre_MPa']:9.3f} ({r['centre_node_radius_mm']:5.2f})"
+                  f"       {r['foundation_top_axis_uz_mm']:.6f}")
+        print(f"MSC.Marc: p(0) {uniform[0]['marc_pressure_at_centre_MPa']} MPa, "
+              f"u_z {uniform[0]['marc_uz_mm']} mm (nodes 2.6 to 4 mm apart)")
+        write_table(os.path.join(args.out, "uniform_mesh_study.csv"), uniform)
+        write_uniform_plots(args.out, uniform, args.degrees, converged)
+        print(f"table: {args.out}/uniform_mesh_study.csv")
+        print(f"plots: {args.out}/centre_pressure_vs_h.png, {args.out}/uz_vs_h.png")
     print(f"study wall time: {time.time() - start:.1f} s")
 
 

@@ -84,18 +84,19 @@ def write_table(path, rows):
         writer.writerows(rows)
 
 
-def loglog_plot(out_dir, stem, title, xlabel, ylabel, series, extra=""):
+def loglog_plot(out_dir, stem, title, xlabel, ylabel, series, extra="", logscale="xy"):
     """Write <stem>.gp and, if gnuplot exists, <stem>.png in out_dir.
 
     series: gnuplot plot clauses ("'file.csv' using 1:2 with ... title ...");
-    extra: further gnuplot commands before the plot.
+    extra: further gnuplot commands before the plot; logscale: the axes
+    with a logarithmic scale ("xy", or "x" for a linear y axis).
     """
     script = os.path.join(out_dir, f"{stem}.gp")
     with open(script, "w") as f:
         f.write("set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n"
                 f"set output '{stem}.png'\n"
                 "set datafile separator ','\n"
-                "set logscale xy\nset grid\nset key outside right top\n"
+                f"set logscale {logscale}\nset grid\nset key outside right top\n"
                 "set format y \"%g\"\n"
                 f"set title \"{title}\"\n"
                 f"set xlabel \"{xlabel}\"\n"
