@@ -245,4 +245,22 @@ namespace Punch3d
     foundation_material.parse_parameters(prm, "Foundation material");
     Common::Problems::ContactRunParameters::parse_parameters(prm);
   }
+
+
+
+  bool
+  Parameters::benchmark_bodies_and_load() const
+  {
+    const auto equal = [](const double value, const double benchmark) {
+      return std::abs(value - benchmark) <= 1e-12 * std::abs(benchmark);
+    };
+    return equal(geometry.punch_radius, 50.) &&
+           equal(geometry.punch_height, 100.) &&
+           equal(geometry.fillet_radius, 10.) &&
+           equal(geometry.foundation_radius, 100.) &&
+           equal(geometry.foundation_height, 200.) &&
+           equal(foundation_material.youngs_modulus, 70000.) &&
+           equal(foundation_material.poisson_ratio, 0.3) &&
+           equal(loading.pressure, 100.);
+  }
 } // namespace Punch3d

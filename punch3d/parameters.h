@@ -100,6 +100,18 @@ namespace Punch3d
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /**
+     * @brief Whether the bodies, the foundation's material and the load are
+     * those of benchmark 2 (punch 100 x 100 mm with a 10 mm fillet,
+     * foundation 200 x 200 mm, E = 70000 MPa, nu = 0.3, 100 MPa), for
+     * which the MSC.Marc and Abaqus results of the benchmark report hold.
+     * The punch's model and modulus are left free: comparing a rigid or
+     * stiffer punch with those results is what measures the punch's
+     * elasticity.
+     */
+    bool
+    benchmark_bodies_and_load() const;
+
     ModelParameters                            model;
     GeometryParameters                         geometry;
     MeshParameters                             mesh;

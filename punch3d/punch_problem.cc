@@ -595,9 +595,12 @@ namespace Punch3d
     const auto    fe_reference = Common::Analytic::fenet_punch_fe_reference();
     const double  mu           = parameters.contact.friction_coefficient;
     const bool    friction     = enforcement.has_friction();
-    // The MSC.Marc and Abaqus results are those of the benchmark's
-    // geometry; a hemispherical end is compared with Hertz only.
-    const bool   benchmark_geometry = !parameters.geometry.hemispherical_end();
+    // The MSC.Marc and Abaqus results are those of the benchmark's bodies
+    // and load; any other geometry (a hemispherical end: Hertz; a larger
+    // foundation: the half-space limit) is compared with the half-space
+    // solution only.
+    const bool   benchmark_geometry = parameters.benchmark_bodies_and_load();
+    const bool   sphere             = parameters.geometry.hemispherical_end();
     const double uz_marc            = benchmark_geometry ?
                                         marc_axis_displacement(mu) :
                                         std::numeric_limits<double>::quiet_NaN();
@@ -649,7 +652,9 @@ namespace Punch3d
     console.print_quantity("Pressure at the centre",
                            "MPa",
                            r.centre_pressure,
-                           benchmark_geometry ? "p/p_MARC" : "p/p_Hertz",
+                           benchmark_geometry ? "p/p_MARC" :
+                           sphere             ? "p/p_Hertz" :
+                                                "p/p_halfspace",
                            r.centre_pressure / (benchmark_geometry ?
                                                   p_centre_marc :
                                                   half_space.pressure(0.)));
@@ -744,7 +749,8 @@ namespace Punch3d
         pressure.title =
           (benchmark_geometry ?
              "Contact pressure, rounded punch (benchmark 2), mu = " :
-             "Contact pressure, hemispherical punch (Hertz), mu = ") +
+           sphere ? "Contact pressure, hemispherical punch (Hertz), mu = " :
+                    "Contact pressure, rounded punch, mu = ") +
           mu_stream.str();
         pressure.x_label = x_label;
         pressure.y_label = "contact pressure [MPa]";
@@ -753,7 +759,7 @@ namespace Punch3d
            {"reference_profile.csv",
             1,
             2,
-           benchmark_geometry ? "half-space" : "Hertz (half-space)",
+           sphere ? "Hertz (half-space)" : "half-space",
             "lines lw 2"},
            {"fe_reference.csv",
             1,
@@ -902,8 +908,11 @@ namespace Punch3d
              "half-space solution of a rounded flat punch (REFERENCES.md "
              "2.1); MSC.Marc/Abaqus curves of NAFEMS R0094 (REFERENCES.md "
              "2.2)" :
+           sphere ?
              "Hertz point contact: the half-space solution of REFERENCES.md "
-             "2.1 with flat radius b = 0")
+             "2.1 with flat radius b = 0" :
+             "half-space solution of a rounded flat punch (REFERENCES.md "
+             "2.1)")
       .set("half_space_contact_radius_mm", half_space.contact_radius())
       .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.));
     if (benchmark_geometry)
