@@ -38,55 +38,47 @@ from study_tools import (ROOT, contact_overrides, enforcement_label, enforcement
 PRODUCTION = os.path.join(ROOT, "parameters/punch3d/punch_axisym_mu0.prm")
 
 
-def run_case(app, degree, level, enforcement, out_dir):
-    case_dir = os.path.join(out_dir, "runs", f"q{degree}_level{level}_{enforcement_tag(enforcement)}")
-    s, wall = run_variant(app, PRODUCTION, case_dir, {
+def run_mesh_variant(app, out_dir, name, degree, enforcement, mesh):
+    """Run the production file with element degree, enforcement and the
+    Mesh entries in mesh; return the row of results every series records."""
+    s, wall = run_variant(app, PRODUCTION, os.path.join(out_dir, "runs", name), {
         "Contact": contact_overrides(enforcement),
-        "Mesh": {"Element degree": degree,
-                 "Number of contact refinements": level,
-                 "Number of edge refinements": max(0, level - 2)}})
+        "Mesh": {"Element degree": degree, **mesh}})
     r = s["results"]
     return {
-        "degree": degree,
-        "level": level,
-        "enforcement": enforcement,
         "n_dofs": s["mesh"]["n_dofs"],
         "h_contact_mm": s["mesh"]["smallest_cell_in_contact_zone_mm"],
         "newton_iterations": s["newton"]["total_iterations"],
         "wall_time_s": round(wall, 3),
         "pressure_at_centre_MPa": r["pressure_at_centre_MPa"],
+        "centre_node_radius_mm": r["centre_node_radius_mm"],
         "peak_pressure_MPa": r["peak_pressure_MPa"],
         "peak_pressure_radius_mm": r["peak_pressure_radius_mm"],
         "contact_radius_mm": r["contact_radius_mm"],
         "foundation_top_axis_uz_mm": r["foundation_top_axis_uz_mm"],
         "force_balance_relative_error": r["force_balance_relative_error"],
         "half_space_contact_radius_mm": s["reference"]["half_space_contact_radius_mm"],
-        "marc_uz_mm": s["reference"].get("marc_foundation_top_axis_uz_mm", float("nan")),
-    }
-
-
-def run_uniform_case(app, degree, level, out_dir):
-    case_dir = os.path.join(out_dir, "runs", f"q{degree}_uniform{level}")
-    s, wall = run_variant(app, PRODUCTION, case_dir, {
-        "Contact": contact_overrides("lm"),
-        "Mesh": {"Element degree": degree,
-                 "Number of global refinements": level,
-                 "Number of contact refinements": 0,
-                 "Number of edge refinements": 0}})
-    r = s["results"]
-    return {
-        "degree": degree,
-        "global_refinements": level,
-        "n_dofs": s["mesh"]["n_dofs"],
-        "h_mm": s["mesh"]["smallest_cell_in_contact_zone_mm"],
-        "wall_time_s": round(wall, 3),
-        "pressure_at_centre_MPa": r["pressure_at_centre_MPa"],
-        "centre_node_radius_mm": r["centre_node_radius_mm"],
-        "contact_radius_mm": r["contact_radius_mm"],
-        "foundation_top_axis_uz_mm": r["foundation_top_axis_uz_mm"],
         "marc_pressure_at_centre_MPa": s["reference"]["marc_pressure_at_centre_MPa"],
         "marc_uz_mm": s["reference"]["marc_foundation_top_axis_uz_mm"],
     }
+
+
+def run_case(app, degree, level, enforcement, out_dir):
+    """A graded mesh: level contact refinements, two fewer edge refinements."""
+    return {"degree": degree, "level": level, "enforcement": enforcement,
+            **run_mesh_variant(app, out_dir, f"q{degree}_level{level}_{enforcement_tag(enforcement)}",
+                               degree, enforcement,
+                               {"Number of contact refinements": level,
+                                "Number of edge refinements": max(0, level - 2)})}
+
+
+def run_uniform_case(app, degree, level, out_dir):
+    """A uniform mesh: level global refinements, no local ones."""
+    return {"degree": degree, "global_refinements": level,
+            **run_mesh_variant(app, out_dir, f"q{degree}_uniform{level}", degree, "lm",
+                               {"Number of global refinements": level,
+                                "Number of contact refinements": 0,
+                                "Number of edge refinements": 0})}
 
 
 def write_uniform_plots(out_dir, rows, degrees, converged):
@@ -95,10 +87,10 @@ def write_uniform_plots(out_dir, rows, degrees, converged):
     converged value of the graded Q2 study."""
     for d in degrees:
         with open(os.path.join(out_dir, f"uniform_q{d}.csv"), "w") as f:
-            f.write("h_mm,pressure_at_centre_MPa,foundation_top_axis_uz_mm\n")
+            f.write("h_contact_mm,pressure_at_centre_MPa,foundation_top_axis_uz_mm\n")
             for r in rows:
                 if r["degree"] == d:
-                    f.write(f"{r['h_mm']},{r['pressure_at_centre_MPa']},"
+                    f.write(f"{r['h_contact_mm']},{r['pressure_at_centre_MPa']},"
                             f"{r['foundation_top_axis_uz_mm']}\n")
     marc = rows[0]
     for stem, col, quantity, unit, key, marc_value in (
@@ -223,7 +215,7 @@ def main():
         print("uniform meshes, Lagrange multipliers:")
         print("degree  refinements  h[mm]   n_dofs  wall[s]  p(0)[MPa] (node r[mm])  u_z[mm]")
         for r in uniform:
-            print(f"Q{r['degree']:<6d} {r['global_refinements']:11d} {r['h_mm']:6.3f} {r['n_dofs']:8d} "
+            print(f"Q{r['degree']:<6d} {r['global_refinements']:11d} {r['h_contact_mm']:6.3f} {r['n_dofs']:8d} "
                   f"{r['wall_time_s']:8.2f}  {r['pressure_at_centre_MPa']:9.3f} ({r['centre_node_radius_mm']:5.2f})"
                   f"       {r['foundation_top_axis_uz_mm']:.6f}")
         print(f"MSC.Marc: p(0) {uniform[0]['marc_pressure_at_centre_MPa']} MPa, "
