@@ -1,6 +1,6 @@
 /*
  * Half-space solution of the rounded flat punch (common/analytic/
- * rounded_punch): checks (a) the FENET benchmark 2 values of REFERENCES.md
+ * rounded_punch): checks (a) the FENET benchmark 2 values of doc/references.md
  * 2.1 (a = 40.430 mm, approach 0.169 mm, p at r = 0 ... 39 mm as tabulated,
  * within their rounding); (b) equilibrium, 2 pi int r p dr = P to 1e-6
  * relative; (c) b = 0 reproduces Hertz's sphere (a, approach, p(r)) to 1e-8;
@@ -89,7 +89,7 @@ main()
     {
       const double value = punch.pressure(r);
       deallog << std::setprecision(2) << "p(" << r << ") = " << value
-              << " MPa (REFERENCES.md " << std::setprecision(1) << p << ")"
+              << " MPa (doc/references.md " << std::setprecision(1) << p << ")"
               << std::endl;
       table_ok = table_ok && std::abs(value - p) < 0.05;
     }

@@ -1,14 +1,14 @@
 // Checks Common::Analytic::SpencePartialSlip and its helpers against
-// REFERENCES.md sec. 1.3 (Spence's partial-slip solution of a Hertz line
+// doc/references.md sec. 1.3 (Spence's partial-slip solution of a Hertz line
 // contact under increasing load, Goodman approximation). (i) The complete
 // elliptic integral K(k) agrees with std::comp_ellint_1, and with mpmath
 // close to k = 1. (ii) The stick
 // ratio c/a solves |beta|/mu = K'(k)/K(k) to 1e-12, equals 1/sqrt(2) for
-// beta/mu = 1 to 1e-10, and reproduces the c/a table of REFERENCES (rounded
-// there to 3-4 digits) and its special cases. (iii) For benchmark 1
+// beta/mu = 1 to 1e-10, and reproduces the c/a table of doc/references.md
+// (rounded there to 3-4 digits) and its special cases. (iii) For benchmark 1
 // (steel cylinder on aluminium, beta = 1/7, mu = 0.1, data from
 // HertzLineContact): c/a = 0.40579; q at x/a = 0.1 ... 0.4 within 0.5 % of
-// the REFERENCES table (166.0, 254.6, 308.2, 328.3 MPa, produced by a
+// the doc/references.md table (166.0, 254.6, 308.2, 328.3 MPa, produced by a
 // coarse script) and within 1e-9 of a 20-digit mpmath evaluation of the
 // same formula (done without the splitting of the log singularity used in
 // the class); q continuous and equal to mu p at x = c, q = mu p in the slip
@@ -100,13 +100,13 @@ main()
             << pass_fail(ok) << std::endl;
   }
 
-  // (ii) Stick ratio: table of REFERENCES 1.3, with its rounding.
+  // (ii) Stick ratio: table of doc/references.md 1.3, with its rounding.
   {
     const std::vector<double> ratios =
       {0.5, 0.75, 1., 1.25, 1. / 0.7, 1.5, 2., 2.5, 3.};
     const std::vector<double> reference =
       {0.985, 0.886, 0.7071, 0.520, 0.4058, 0.366, 0.172, 0.079, 0.036};
-    // Compared to half a unit of the last digit given in REFERENCES.
+    // Compared to half a unit of the last digit given in doc/references.md.
     const std::vector<int> digits      = {3, 3, 4, 3, 4, 3, 3, 3, 3};
     bool                   residual_ok = true;
     for (unsigned int i = 0; i < ratios.size(); ++i)
@@ -180,7 +180,8 @@ main()
   {
     const std::vector<double> xi_values = {0.1, 0.2, 0.3, 0.4};
     const std::vector<double> reference = {166.0, 254.6, 308.2, 328.3};
-    // q/p0 from mpmath (20 digits) applied to the formula of REFERENCES 1.3.
+    // q/p0 from mpmath (20 digits) applied to the formula of
+    // doc/references.md 1.3.
     const std::vector<double> high_precision = {0.046298166057725731,
                                                 0.070986726387125078,
                                                 0.085940845668963529,
@@ -259,14 +260,15 @@ main()
         deallog << std::setprecision(1) << "x/a = " << 0.1 * (i + 1)
                 << std::setprecision(5) << ": S0 = " << s0 << " mm, g0 = " << g0
                 << " mm" << std::endl;
-        // REFERENCES rounded the script's 5-decimal values to 4 decimals:
-        // half a unit of the 4th decimal plus 0.05e-4 of double rounding.
+        // doc/references.md rounded the script's 5-decimal values to 4
+        // decimals: half a unit of the 4th decimal plus 0.05e-4 of double
+        // rounding.
         table_ok = table_ok && std::abs(s0 - slip_reference[i]) < 5.5e-5 &&
                    std::abs(g0 - displacement_reference[i]) < 5.5e-5;
         odd_ok = odd_ok && spence.frictionless_slip(-x) == -s0 &&
                  spence.frictionless_relative_displacement(-x) == -g0;
       }
-    deallog << "S0 and g0 = REFERENCES table to 5.5e-5 mm: "
+    deallog << "S0 and g0 = doc/references.md table to 5.5e-5 mm: "
             << pass_fail(table_ok) << std::endl;
     const double g0_a = spence.frictionless_relative_displacement(a);
     const double g0_reference =

@@ -554,8 +554,8 @@ namespace Common
     std::vector<std::pair<double, double>>
     spence_slip_table_mu01(const double a, const double radius)
     {
-      // REFERENCES.md 1.3: S [mm] at x/a = 0, 0.1, ..., 1 for a = 6.21463 mm
-      // and R = 50 mm.
+      // doc/references.md 1.3: S [mm] at x/a = 0, 0.1, ..., 1 for a = 6.21463
+      // mm and R = 50 mm.
       const double tabulated[] = {0.,
                                   0.00024,
                                   0.00097,

@@ -19,9 +19,9 @@
  * \f]
  * With b = 0 this is Hertz's sphere on a half-space.
  *
- * References: M. Ciavarella et al., Proc. R. Soc. A 455 (1999); V.L. Popov,
- * M. Hess, Method of Dimensionality Reduction, Springer 2015; REFERENCES.md
- * section 2.1.
+ * References: M. Ciavarella, Int. J. Solids Struct. 36 (1999) 4149-4181; V.L.
+ * Popov, M. Hess, Method of Dimensionality Reduction, Springer 2015;
+ * doc/references.md section 2.1.
  */
 #ifndef common_analytic_rounded_punch_h
 #define common_analytic_rounded_punch_h
@@ -107,7 +107,7 @@ namespace Common
 
     /**
      * @brief The MSC.Marc and Abaqus contact curves of FENET benchmark 2
-     * (NAFEMS R0094, digitised in solids4foam; REFERENCES.md 2.2) at the
+     * (NAFEMS R0094, digitised in solids4foam; doc/references.md 2.2) at the
      * tabulated radii; the peak is listed at r = 40 mm.
      */
     std::vector<PunchReferencePoint>
@@ -129,7 +129,7 @@ namespace Common
     /**
      * @brief The MSC.Marc displacement curves of the foundation top of
      * FENET benchmark 2 (NAFEMS R0094, digitised in solids4foam;
-     * REFERENCES.md 2.2) at the tabulated radii, from the axis (listed at
+     * doc/references.md 2.2) at the tabulated radii, from the axis (listed at
      * r = 0.5 mm) to r = 80 mm.
      */
     std::vector<PunchSurfaceReferencePoint>

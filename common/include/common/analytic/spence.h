@@ -7,9 +7,9 @@
  * frictionless slip; no mesh, no solver. The Hertz data (a, p0, R) come
  * from HertzLineContact or from the caller.
  *
- * References: D.A. Spence, J. Elasticity 3 (1973) 297-319 and
- * Proc. R. Soc. A 339 (1975); K.L. Johnson, Contact Mechanics, CUP 1985,
- * sec. 5.4; derivation and reference table in REFERENCES.md, sec. 1.3.
+ * References: D.A. Spence, Proc. Camb. Phil. Soc. 73 (1973) 249-268 and
+ * J. Elasticity 5 (1975) 297-319; K.L. Johnson, Contact Mechanics, CUP 1985,
+ * sec. 5.4; derivation and reference table in doc/references.md, sec. 1.3.
  */
 #ifndef common_analytic_spence_h
 #define common_analytic_spence_h
@@ -60,7 +60,7 @@ namespace Common
 
     /**
      * @brief Slip accumulated in contact under increasing load for
-     * \f$|\beta| = 1/7\f$ and \f$\mu = 0.1\f$, tabulated in REFERENCES.md
+     * \f$|\beta| = 1/7\f$ and \f$\mu = 0.1\f$, tabulated in doc/references.md
      * 1.3 from a quadrature of Spence's solution (+-5 %) for a = 6.21463 mm,
      * R = 50 mm, and scaled to other loads and radii by
      * \f$S \propto a^2/R\f$ (the solution is self-similar).
@@ -90,7 +90,7 @@ namespace Common
      * \f$\frac{1}{\pi}\,\mathrm{PV}\!\int_{-k}^{k} X(u)/(\xi-u)\,du =
      * f(\xi)\f$, \f$f = -|\beta|/\sqrt{1-\xi^2} - \mu H_S(\xi)\f$,
      * \f$H_S = -\frac{2}{\pi b}\ln\frac{1+b}{|\xi|}\f$,
-     * \f$b = \sqrt{1-\xi^2}\f$ (REFERENCES.md sec. 1.3, read with these
+     * \f$b = \sqrt{1-\xi^2}\f$ (doc/references.md sec. 1.3, read with these
      * signs; they reproduce its table). X is odd and jumps at the origin:
      * the part \f$-\frac{2\mu}{\pi}\ln|t|\f$ of f gives exactly
      * \f$X = -\frac{2\mu}{\pi}\arccos(\xi/k)\f$ for \f$\xi > 0\f$
@@ -108,13 +108,14 @@ namespace Common
      *
      * Signs: all results are given for \f$x > 0\f$ as magnitudes computed
      * with \f$|\beta|\f$ and are odd in x. The direction follows
-     * REFERENCES.md sec. 1.2: without friction the softer surface slips
+     * doc/references.md sec. 1.2: without friction the softer surface slips
      * toward the centre relative to the stiffer one; with friction the
      * traction on the softer body points away from the centre.
      *
      * Limitations: Goodman approximation (the fully coupled solution
      * differs by O(beta mu)); half-spaces; loading from zero in many small
-     * increments (the one-increment answer differs, REFERENCES.md sec. 1.4).
+     * increments (the one-increment answer differs, doc/references.md
+     * sec. 1.4).
      */
     class SpencePartialSlip
     {
