@@ -3,9 +3,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 namespace Common
 {
@@ -23,6 +25,40 @@ namespace Common
                   << " --print-parameters   list every .prm entry with "
                      "its documentation and default\n"
                   << "  " << name << " --help               this text\n";
+      }
+
+
+      /**
+       * Report an error in one line and end the run with exit code 1. In
+       * parallel the other ranks may be waiting for this one in a
+       * collective call, so every rank is ended (MPI_Abort). An error of
+       * the input occurs on every rank at once: rank 0 reports it, and the
+       * other ranks wait a moment first, so that the abort ends them
+       * before they repeat it; an error on another rank alone is reported
+       * by that rank, with its number.
+       */
+      int
+      end_with_error(const std::string &application_name,
+                     const std::string &message)
+      {
+        const unsigned int n_ranks =
+          dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        const unsigned int rank =
+          dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+        if (n_ranks == 1)
+          {
+            std::cerr << application_name << ": error: " << message
+                      << std::endl;
+            return 1;
+          }
+        if (rank != 0)
+          std::this_thread::sleep_for(std::chrono::seconds(2));
+        std::cerr << application_name << ": error"
+                  << (rank == 0 ? std::string() :
+                                  " (MPI rank " + std::to_string(rank) + ")")
+                  << ": " << message << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+        return 1;
       }
     } // namespace
 
@@ -107,18 +143,11 @@ namespace Common
         }
       catch (const std::exception &exception)
         {
-          if (root)
-            std::cerr << application_name
-                      << ": error: " << one_line_message(exception)
-                      << std::endl;
-          return 1;
+          return end_with_error(application_name, one_line_message(exception));
         }
       catch (...)
         {
-          if (root)
-            std::cerr << application_name << ": error: unknown exception"
-                      << std::endl;
-          return 1;
+          return end_with_error(application_name, "unknown exception");
         }
       return 0;
     }

@@ -23,6 +23,10 @@ namespace Common
      * documentation, units and default. Without arguments the usage is
      * printed and the exit code is 1. Any error is reported in one line on
      * standard error, `<app>: error: <what>`, and the exit code is 1.
+     * In a parallel run an error on any rank ends every rank (none is
+     * left waiting in a collective call) and is reported once: by rank 0
+     * if it has it (an input error occurs on every rank), otherwise by the
+     * rank that has it, `<app>: error (MPI rank <r>): <what>`.
      *
      * @param[in] argc, argv Command line.
      * @param[in] application_name Executable name for messages.
