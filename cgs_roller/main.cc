@@ -19,7 +19,7 @@ main(int argc, char *argv[])
     &CgsRoller::Parameters::declare_parameters,
     [](const std::string &parameter_file) {
       const CgsRoller::Parameters parameters(parameter_file);
-      CgsRoller::RollerProblem<2> problem(parameters);
+      CgsRoller::RollerProblem    problem(parameters);
       problem.run();
     });
 }

@@ -52,33 +52,15 @@ namespace CgsRoller
   {
     prm.enter_subsection("Mesh");
     {
-      prm.declare_entry("Element degree",
-                        "2",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the FE_Q displacement element "
-                        "and of the geometry mapping (1: Q1, 2: Q2).");
-      prm.declare_entry("Number of global refinements",
-                        "0",
-                        Patterns::Integer(0, 6),
-                        "Uniform refinements of the coarse mesh (cells of "
-                        "about half the roller radius).");
-      prm.declare_entry("Number of contact refinements",
-                        "6",
-                        Patterns::Integer(0, 14),
-                        "Graded refinements toward the contact strip; each "
-                        "halves the cell size there.");
+      Common::Geometry::MeshParameters::declare_parameters(
+        prm,
+        {"about half the roller radius", "the contact strip", 6, 14});
       prm.declare_entry("Contact zone length",
                         "8",
                         Patterns::Double(0.),
                         "Length of the block surface strip, from the "
                         "symmetry line, refined most. Should exceed the "
                         "contact half-width. Units: mm.");
-      prm.declare_entry("Grading factor",
-                        "2.0",
-                        Patterns::Double(0.5),
-                        "A cell is refined if its centre lies closer to the "
-                        "strip than this many cell diameters. "
-                        "Dimensionless.");
     }
     prm.leave_subsection();
   }
@@ -90,11 +72,8 @@ namespace CgsRoller
   {
     prm.enter_subsection("Mesh");
     {
-      element_degree        = prm.get_integer("Element degree");
-      n_global_refinements  = prm.get_integer("Number of global refinements");
-      n_contact_refinements = prm.get_integer("Number of contact refinements");
-      contact_zone_length   = prm.get_double("Contact zone length");
-      grading_factor        = prm.get_double("Grading factor");
+      Common::Geometry::MeshParameters::parse_parameters(prm);
+      contact_zone_length = prm.get_double("Contact zone length");
     }
     prm.leave_subsection();
   }

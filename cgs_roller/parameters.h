@@ -6,6 +6,7 @@
 #ifndef cgs_roller_parameters_h
 #define cgs_roller_parameters_h
 
+#include <common/geometry/mesh_parameters.h>
 #include <common/materials/linear_elastic.h>
 #include <common/problems/contact_run_parameters.h>
 
@@ -33,23 +34,18 @@ namespace CgsRoller
     double block_height;
   };
 
-  /** Subsection "Mesh". */
-  struct MeshParameters
+  /** Subsection "Mesh": the common entries and the refined strip. */
+  struct MeshParameters : Common::Geometry::MeshParameters
   {
     static void
     declare_parameters(ParameterHandler &prm);
+
     void
     parse_parameters(ParameterHandler &prm);
 
-    unsigned int element_degree;
-    unsigned int n_global_refinements;
-    unsigned int n_contact_refinements;
     /** Length of the surface strip from the symmetry line that is refined
      * most (mm). */
     double contact_zone_length;
-    /** Refine a cell if its centre is closer to the strip than this many
-     * cell diameters. */
-    double grading_factor;
   };
 
   /** Subsection "Loading". */

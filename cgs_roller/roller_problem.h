@@ -9,22 +9,13 @@
 #include <common/analytic/hertz.h>
 #include <common/analytic/spence.h>
 #include <common/contact/contact_postprocessor.h>
-#include <common/io/console.h>
-#include <common/io/json_writer.h>
-#include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
-#include <common/solvers/load_stepping.h>
+#include <common/problems/contact_application.h>
+#include <common/solvers/load_program.h>
 
 #include "parameters.h"
 
-#include <deal.II/base/index_set.h>
-#include <deal.II/distributed/shared_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/lac/affine_constraints.h>
-
-#include <memory>
+#include <string>
+#include <vector>
 
 namespace CgsRoller
 {
@@ -49,26 +40,35 @@ namespace CgsRoller
   } // namespace MaterialIds
 
   /**
-   * Half model of a cylinder on a block, plane strain, small strain,
-   * frictionless mortar contact.
+   * Half model of a cylinder on a block, plane strain, small strain, mortar
+   * contact, frictionless or with Coulomb friction.
    */
-  template <int dim>
-  class RollerProblem
+  class RollerProblem : public Common::Problems::ContactApplication<2>
   {
   public:
+    static constexpr int dim = 2;
+
     explicit RollerProblem(const Parameters &parameters);
 
-    /** Build, solve all load steps and write the results. */
-    void
-    run();
-
   private:
+    std::string
+    title() const override;
     void
-    make_grid();
+    make_grid() override;
     void
-    setup_system();
+    setup_system() override;
     Common::Problems::ExternalLoad
-    external_load() const;
+    external_load() const override;
+    std::vector<std::string>
+    result_files() const override;
+    void
+    postprocess_step(
+      const Common::Solvers::StepInfo         &step,
+      const Common::Solvers::NewtonStatistics &statistics) override;
+    void
+    output_results(
+      const Common::Solvers::LoadSteppingStatistics &stepping) override;
+
     /** Spence's partial-slip solution at full load (mu = 0 allowed). */
     Common::Analytic::SpencePartialSlip
     spence_reference() const;
@@ -87,33 +87,10 @@ namespace CgsRoller
     };
     Results
     evaluate_results(const double load_factor) const;
-    void
-    postprocess_step(const unsigned int                       step,
-                     const double                             load_factor,
-                     const Common::Solvers::NewtonStatistics &statistics);
-    void
-    output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
 
-    // Run set-up
-    const Parameters   &parameters;
-    MPI_Comm            mpi_communicator;
-    Common::IO::Console console;
-
-    // Discretisation
-    parallel::shared::Triangulation<dim>                         triangulation;
-    const FESystem<dim>                                          fe;
-    const MappingQ<dim>                                          mapping;
-    DoFHandler<dim>                                              dof_handler;
-    types::global_dof_index                                      load_dof;
-    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
-
-    // Contact problem and its state
-    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
-    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
-      contact_problem;
-
-    // Results
-    Common::IO::JsonObject timings;
+    const Parameters &parameters;
+    /** The vertical DoF of the roller's top vertex, where the force acts. */
+    types::global_dof_index load_dof;
   };
 } // namespace CgsRoller
 

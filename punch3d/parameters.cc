@@ -23,12 +23,17 @@ namespace Punch3d
       prm.declare_entry(
         "Punch",
         "elastic",
-        Patterns::Selection("elastic|rigid"),
+        Patterns::Selection("elastic|rigid|rigid surface"),
         "How the punch responds: 'elastic' (the benchmark: a linear "
-        "elastic body with the entries of 'Punch material'), or 'rigid': it "
-        "translates along the axis without deforming, and the pressure on "
-        "its top acts as their resultant. 'rigid' measures what the "
-        "punch's elasticity contributes; the half-space reference then "
+        "elastic body with the entries of 'Punch material'); 'rigid': the "
+        "meshed punch translates along the axis without deforming, and the "
+        "pressure on its top acts as their resultant; 'rigid surface': the "
+        "same rigid punch without its mesh, its contact face an analytic "
+        "surface (the flat face and the fillet, revolved in 3D) that moves "
+        "with a reference node, which a single coarse cell at the top of "
+        "the punch carries together with the pressure. 'rigid' measures "
+        "what the punch's elasticity contributes, 'rigid surface' what "
+        "meshing the rigid punch contributes; the half-space reference then "
         "takes an infinite punch modulus.");
     }
     prm.leave_subsection();
@@ -41,8 +46,9 @@ namespace Punch3d
   {
     prm.enter_subsection("Model");
     {
-      three_d     = (prm.get("Dimension") == "3d quarter");
-      rigid_punch = (prm.get("Punch") == "rigid");
+      three_d       = (prm.get("Dimension") == "3d quarter");
+      rigid_surface = (prm.get("Punch") == "rigid surface");
+      rigid_punch   = (prm.get("Punch") == "rigid") || rigid_surface;
     }
     prm.leave_subsection();
   }
@@ -129,23 +135,13 @@ namespace Punch3d
   {
     prm.enter_subsection("Mesh");
     {
-      prm.declare_entry("Element degree",
-                        "2",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the FE_Q displacement element "
-                        "and of the geometry mapping (1: Q1, 2: Q2).");
-      prm.declare_entry("Number of global refinements",
-                        "0",
-                        Patterns::Integer(0, 6),
-                        "Uniform refinements of the coarse mesh (cells of "
-                        "about a quarter of the punch radius).");
-      prm.declare_entry("Number of contact refinements",
-                        "4",
-                        Patterns::Integer(0, 12),
-                        "Graded refinements toward the contact strip (the "
-                        "foundation top under the punch and the punch's "
-                        "flat face and fillet); each halves the cell size "
-                        "there.");
+      Common::Geometry::MeshParameters::declare_parameters(
+        prm,
+        {"about a quarter of the punch radius",
+         "the contact strip (the foundation top under the punch and the "
+         "punch's flat face and fillet)",
+         4,
+         12});
       prm.declare_entry("Number of edge refinements",
                         "3",
                         Patterns::Integer(0, 12),
@@ -155,12 +151,6 @@ namespace Punch3d
                         "pressure peaks (with a hemispherical end: from "
                         "the axis to 1.25 times the Hertz contact "
                         "radius).");
-      prm.declare_entry("Grading factor",
-                        "2.0",
-                        Patterns::Double(0.5),
-                        "A cell is refined if its centre lies closer to the "
-                        "target than this many cell diameters. "
-                        "Dimensionless.");
     }
     prm.leave_subsection();
   }
@@ -172,11 +162,8 @@ namespace Punch3d
   {
     prm.enter_subsection("Mesh");
     {
-      element_degree        = prm.get_integer("Element degree");
-      n_global_refinements  = prm.get_integer("Number of global refinements");
-      n_contact_refinements = prm.get_integer("Number of contact refinements");
-      n_edge_refinements    = prm.get_integer("Number of edge refinements");
-      grading_factor        = prm.get_double("Grading factor");
+      Common::Geometry::MeshParameters::parse_parameters(prm);
+      n_edge_refinements = prm.get_integer("Number of edge refinements");
     }
     prm.leave_subsection();
   }

@@ -6,6 +6,7 @@
 #ifndef punch3d_parameters_h
 #define punch3d_parameters_h
 
+#include <common/geometry/mesh_parameters.h>
 #include <common/materials/linear_elastic.h>
 #include <common/problems/contact_run_parameters.h>
 
@@ -43,23 +44,17 @@ namespace Punch3d
     hemispherical_end() const;
   };
 
-  /** Subsection "Mesh". */
-  struct MeshParameters
+  /** Subsection "Mesh": the common entries and the edge refinements. */
+  struct MeshParameters : Common::Geometry::MeshParameters
   {
     static void
     declare_parameters(ParameterHandler &prm);
+
     void
     parse_parameters(ParameterHandler &prm);
 
-    unsigned int element_degree;
-    unsigned int n_global_refinements;
-    /** Graded refinements toward the contact strip. */
-    unsigned int n_contact_refinements;
     /** Further graded refinements toward the contact edge. */
     unsigned int n_edge_refinements;
-    /** Refine a cell if its centre is closer to the target than this many
-     * cell diameters. */
-    double grading_factor;
   };
 
   /** Subsection "Loading". */
@@ -86,6 +81,9 @@ namespace Punch3d
     bool three_d;
     /** The punch translates along the axis without deforming. */
     bool rigid_punch;
+    /** The rigid punch is an analytic surface carried by a reference node,
+     * not a mesh. */
+    bool rigid_surface;
   };
 
   /**

@@ -8,21 +8,15 @@
 
 #include <common/analytic/rounded_punch.h>
 #include <common/contact/contact_postprocessor.h>
-#include <common/io/console.h>
-#include <common/io/json_writer.h>
-#include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
-#include <common/solvers/load_stepping.h>
+#include <common/physics/solid_operator.h>
+#include <common/problems/contact_application.h>
+#include <common/solvers/load_program.h>
 
 #include "parameters.h"
 
-#include <deal.II/distributed/shared_tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/lac/affine_constraints.h>
-
+#include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace Punch3d
@@ -53,6 +47,15 @@ namespace Punch3d
     constexpr types::material_id foundation = 2;
   } // namespace MaterialIds
 
+  /** Distance of a point from the axis: r = x in the axisymmetric model,
+   * sqrt(x^2 + z^2) in the 3D one (y is the axis). */
+  template <int dim>
+  inline double
+  radius(const Point<dim> &p)
+  {
+    return dim == 2 ? std::abs(p[0]) : std::hypot(p[0], p[dim - 1]);
+  }
+
   /**
    * The rounded punch on the foundation, small strain, mortar contact with
    * optional Coulomb friction: for dim = 2 the axisymmetric model (r, z),
@@ -61,16 +64,22 @@ namespace Punch3d
    * along r (on the plane z = 0 in 3D) and forces for the full bodies.
    */
   template <int dim>
-  class PunchProblem
+  class PunchProblem : public Common::Problems::ContactApplication<dim>
   {
   public:
     explicit PunchProblem(const Parameters &parameters);
 
-    /** Build, solve all load steps and write the results. */
-    void
-    run();
-
   private:
+    using Base = Common::Problems::ContactApplication<dim>;
+    using Base::console;
+    using Base::constraints_dirichlet_and_hanging_nodes;
+    using Base::contact_problem;
+    using Base::dof_handler;
+    using Base::fe;
+    using Base::mapping;
+    using Base::mpi_communicator;
+    using Base::triangulation;
+
     /** Fraction of the bodies the model holds: 1 (axisymmetric, integrals
      * over full rings) or 1/4 (3D quarter). */
     static constexpr double model_fraction = dim == 2 ? 1. : 0.25;
@@ -83,12 +92,28 @@ namespace Punch3d
                         Common::Physics::Kinematics::cartesian;
     }
 
+    std::string
+    title() const override;
     void
-    make_grid();
+    make_grid() override;
     void
-    setup_system();
+    setup_system() override;
     Common::Problems::ExternalLoad
-    external_load() const;
+    external_load() const override;
+    std::vector<std::string>
+    result_files() const override;
+    void
+    postprocess_step(
+      const Common::Solvers::StepInfo         &step,
+      const Common::Solvers::NewtonStatistics &statistics) override;
+    void
+    output_results(
+      const Common::Solvers::LoadSteppingStatistics &stepping) override;
+
+    /** The geometry of the contact pair: the meshed punch face, or an
+     * analytic rigid surface (Model/Punch = rigid surface). */
+    std::unique_ptr<Common::Contact::ContactGeometry<dim>>
+    make_contact_geometry() const;
     /** Half-space solution for the full load the model applies: the
      * pressure times the discrete loaded area once setup_system() has
      * measured it (in 3D the mapped quarter disc, with Q1 its chords),
@@ -113,35 +138,12 @@ namespace Punch3d
     };
     Results
     evaluate_results(const double load_factor) const;
-    void
-    postprocess_step(const unsigned int                       step,
-                     const double                             load_factor,
-                     const Common::Solvers::NewtonStatistics &statistics);
-    void
-    output_results(const Common::Solvers::LoadSteppingStatistics &stepping);
 
-    // Run set-up
-    const Parameters   &parameters;
-    MPI_Comm            mpi_communicator;
-    Common::IO::Console console;
-
-    // Discretisation
-    parallel::shared::Triangulation<dim> triangulation;
-    const FESystem<dim>                  fe;
-    const MappingQ<dim>                  mapping;
-    DoFHandler<dim>                      dof_handler;
-    types::global_dof_index              axis_dof;
+    const Parameters &parameters;
+    /** The axial DoF of the foundation's top vertex on the axis. */
+    types::global_dof_index axis_dof;
     /** Area of the discrete punch top, full body (mm^2). */
-    double                                                       loaded_area;
-    std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
-
-    // Contact problem and its state
-    AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
-    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
-      contact_problem;
-
-    // Results
-    Common::IO::JsonObject timings;
+    double loaded_area;
   };
 } // namespace Punch3d
 

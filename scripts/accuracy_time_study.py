@@ -28,7 +28,7 @@ def run_case(app, degree, level, enforcement, out_dir):
     s, wall = run_variant(app, PRODUCTION, case_dir, {
         "Contact": contact_overrides(enforcement),
         "Mesh": {"Element degree": degree, "Number of contact refinements": level},
-        "Load stepping": {"Number of load steps": 1},
+        "Load program/Stage 1": {"Number of steps": 1},
         "Run control": {"Measure contact cost": "true"}})
     return {
         "degree": degree,

@@ -4,7 +4,7 @@
 Runs the production case parameters/cgs_roller/spence_mu01.prm for each
 friction coefficient mu and compares the stick-zone ratio c/a with Spence's
 relation beta/mu = K'(c/a)/K(c/a) for half-spaces under increasing load
-(REFERENCES.md 1.3), as evaluated by the application itself
+(doc/references.md 1.3), as evaluated by the application itself
 (summary.json, reference.stick_ratio_c_over_a).
 
 Two loads are swept:
@@ -69,8 +69,10 @@ def run_case(app, mu, load, level, steps, out_dir):
                 f"  set Number of contact refinements = {level + extra}\n"
                 f"  set Contact zone length = {CONTACT_ZONE * length:g}\n"
                 "end\n"
-                "subsection Load stepping\n"
-                f"  set Number of load steps = {steps}\n"
+                "subsection Load program\n"
+                "  subsection Stage 1\n"
+                f"    set Number of steps = {steps}\n"
+                "  end\n"
                 "end\n"
                 "subsection Output\n"
                 f"  set Output directory = {case_dir}\n"

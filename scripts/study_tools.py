@@ -30,7 +30,8 @@ def enforcement_tag(enforcement):
 def run_variant(app, production, case_dir, overrides):
     """Run app on production with the subsections in overrides.
 
-    overrides maps a subsection name to a dict of entries; the Output
+    overrides maps a subsection name to a dict of entries (a nested
+    subsection is named with its path, "Load program/Stage 1"); the Output
     subsection (directory case_dir, no graphical output, no plots, quiet)
     is added. Returns (summary.json as a dict, wall time in seconds).
     """
@@ -51,9 +52,10 @@ def run_variant_measured(app, production, case_dir, overrides):
                           "Verbosity": "quiet"}
     text = f"include {production}\n"
     for name, entries in sections.items():
-        text += f"subsection {name}\n"
+        path = name.split("/")
+        text += "".join(f"subsection {part}\n" for part in path)
         text += "".join(f"  set {k} = {v}\n" for k, v in entries.items())
-        text += "end\n"
+        text += "end\n" * len(path)
     prm = os.path.join(case_dir, "case.prm")
     with open(prm, "w") as f:
         f.write(text)

@@ -12,12 +12,13 @@
 #ifndef tests_two_block_patch_h
 #define tests_two_block_patch_h
 
+#include <common/contact/contact_geometry.h>
 #include <common/contact/contact_parameters.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/materials/linear_elastic.h>
 #include <common/physics/boundary_conditions.h>
 #include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
+#include <common/problems/contact_newton_problem.h>
 #include <common/solvers/newton_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -319,11 +320,20 @@ namespace TwoBlockPatch
         materials,
         setting.kinematics);
 
+      contact_geometry =
+        std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
+          dof_handler,
+          mapping,
+          contact.secondary_boundary_id,
+          contact.primary_boundary_id,
+          contact.search_distance,
+          setting.kinematics == Common::Physics::Kinematics::axisymmetric);
       contact_problem =
-        std::make_unique<Common::Problems::SmallStrainContactProblem<dim>>(
+        std::make_unique<Common::Problems::ContactNewtonProblem<dim>>(
           dof_handler,
           mapping,
           *physics,
+          *contact_geometry,
           contact,
           solver_parameters,
           newton_parameters,
@@ -349,9 +359,9 @@ namespace TwoBlockPatch
     external_load() const
     {
       Common::Problems::ExternalLoad load;
-      load.add = [this](const double                     load_factor,
-                        const AffineConstraints<double> &c,
-                        TrilinosWrappers::MPI::Vector   &rhs) {
+      load.add = [this](const Common::Solvers::LoadState &state,
+                        const AffineConstraints<double>  &c,
+                        TrilinosWrappers::MPI::Vector    &rhs) {
         const QGauss<dim - 1> face_quadrature(degree + 1);
         FEFaceValues<dim>     fe_face_values(mapping,
                                          fe,
@@ -362,7 +372,7 @@ namespace TwoBlockPatch
         Vector<double>        cell_rhs(dofs_per_cell);
         std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
         Tensor<1, dim>                       traction;
-        traction[dim - 1] = -load_factor * setting.pressure;
+        traction[dim - 1] = -state.load_factor() * setting.pressure;
         const FEValuesExtractors::Vector displacement(0);
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -385,8 +395,8 @@ namespace TwoBlockPatch
                 }
       };
       const double force = setting.pressure * interface_area(setting, dim);
-      load.magnitude     = [force](const double load_factor) {
-        return load_factor * force;
+      load.magnitude     = [force](const Common::Solvers::LoadState &state) {
+        return state.load_factor() * force;
       };
       return load;
     }
@@ -398,7 +408,9 @@ namespace TwoBlockPatch
     {
       ConditionalOStream quiet(std::cout, false);
       const auto         statistics =
-        contact_problem->solve(1., external_load(), quiet);
+        contact_problem->solve(Common::Solvers::LoadState::with_load_factor(1.),
+                               external_load(),
+                               quiet);
       if (!statistics.converged)
         deallog << "Newton failure: " << statistics.failure << std::endl;
       contact_problem->commit();
@@ -418,7 +430,9 @@ namespace TwoBlockPatch
     Common::Contact::ContactParameters         contact;
     Common::Solvers::LinearSolverParameters    solver_parameters;
     Common::Solvers::NonlinearSolverParameters newton_parameters;
-    std::unique_ptr<Common::Problems::SmallStrainContactProblem<dim>>
+    std::unique_ptr<Common::Contact::ReferenceMortarGeometry<dim>>
+      contact_geometry;
+    std::unique_ptr<Common::Problems::ContactNewtonProblem<dim>>
       contact_problem;
   };
 } // namespace TwoBlockPatch

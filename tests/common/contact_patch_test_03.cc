@@ -24,6 +24,7 @@
  * and 3.7e-5 and 1.3e-3 (Q2) at y = 1 and y = 201 mm.
  */
 
+#include <common/contact/contact_geometry.h>
 #include <common/contact/contact_postprocessor.h>
 #include <common/geometry/revolution.h>
 #include <common/geometry/two_body_meshes.h>
@@ -31,7 +32,7 @@
 #include <common/physics/boundary_conditions.h>
 #include <common/physics/boundary_loads.h>
 #include <common/physics/small_strain_elasticity.h>
-#include <common/problems/small_strain_contact_problem.h>
+#include <common/problems/contact_newton_problem.h>
 
 #include "../tests.h"
 
@@ -185,14 +186,22 @@ namespace
     newton_parameters.max_iterations = 10;
     newton_parameters.tolerance      = 1e-10;
 
-    Common::Problems::SmallStrainContactProblem<dim> problem(dof_handler,
-                                                             mapping,
-                                                             physics,
-                                                             contact,
-                                                             solver_parameters,
-                                                             newton_parameters,
-                                                             E_lower,
-                                                             MPI_COMM_WORLD);
+    Common::Contact::ReferenceMortarGeometry<dim> geometry(
+      dof_handler,
+      mapping,
+      contact.secondary_boundary_id,
+      contact.primary_boundary_id,
+      contact.search_distance,
+      false);
+    Common::Problems::ContactNewtonProblem<dim> problem(dof_handler,
+                                                        mapping,
+                                                        physics,
+                                                        geometry,
+                                                        contact,
+                                                        solver_parameters,
+                                                        newton_parameters,
+                                                        E_lower,
+                                                        MPI_COMM_WORLD);
     problem.setup(constraints);
 
     // The interface area of the discrete geometry: the secondary surface.
@@ -213,23 +222,26 @@ namespace
           }
 
     Common::Problems::ExternalLoad load;
-    load.add = [&](const double                     load_factor,
-                   const AffineConstraints<double> &c,
-                   TrilinosWrappers::MPI::Vector   &rhs) {
+    load.add = [&](const Common::Solvers::LoadState &state,
+                   const AffineConstraints<double>  &c,
+                   TrilinosWrappers::MPI::Vector    &rhs) {
       Common::Physics::add_boundary_pressure(
         mapping,
         dof_handler,
         upper_top,
-        load_factor * p,
+        state.load_factor() * p,
         Common::Physics::Kinematics::cartesian,
         c,
         rhs);
     };
-    load.magnitude = [&](const double load_factor) {
-      return load_factor * p * area;
+    load.magnitude = [&](const Common::Solvers::LoadState &state) {
+      return state.load_factor() * p * area;
     };
     ConditionalOStream quiet(std::cout, false);
-    const auto         statistics = problem.solve(1., load, quiet);
+    const auto         statistics =
+      problem.solve(Common::Solvers::LoadState::with_load_factor(1.),
+                    load,
+                    quiet);
 
     const auto  &coupling    = problem.coupling();
     const auto  &enforcement = problem.enforcement();

@@ -264,7 +264,7 @@ namespace
     Common::Problems::ExternalLoad load = patch.external_load();
     double                         U    = 0.;
     load.prescribed_displacements =
-      [this, &U](const double,
+      [this, &U](const Common::Solvers::LoadState &,
                  std::map<types::global_dof_index, double> &values) {
         const Tensor<1, dim> d = shift_direction<dim>();
         for (unsigned int c = 0; c < dim - 1; ++c)
@@ -279,7 +279,10 @@ namespace
     for (const auto &[name, shift] : steps)
       {
         U                     = shift;
-        const auto statistics = patch.contact_problem->solve(1., load, quiet);
+        const auto statistics = patch.contact_problem->solve(
+          Common::Solvers::LoadState::with_load_factor(1.),
+          load,
+          quiet);
         if (!statistics.converged)
           deallog << "Newton failure: " << statistics.failure << std::endl;
         patch.contact_problem->commit();

@@ -43,7 +43,7 @@ namespace Common
         for (const auto &[k, M] : row.primary_weights)
           for (unsigned int c = 0; c < dim; ++c)
             {
-              dofs.push_back(coupling.primary_surface().node(k).dofs[c]);
+              dofs.push_back(coupling.primary_node(k).dofs[c]);
               values.push_back(M * direction[c]);
             }
         B.reinit(values.size());
@@ -365,7 +365,7 @@ namespace Common
           for (const auto &entry : row.primary_weights)
             for (unsigned int e = 0; e < dim; ++e)
               primary_dofs.push_back(
-                coupling.primary_surface().node(entry.first).dofs[e]);
+                coupling.primary_node(entry.first).dofs[e]);
           for (unsigned int d = 0; d < dim; ++d)
             partners[coupling.secondary_surface().node(j).dofs[d]] =
               primary_dofs;
@@ -446,9 +446,8 @@ namespace Common
                     entries;
                   for (const auto &[k, M] : row.primary_weights)
                     if (std::abs(M) > 1e-14 * row.weight)
-                      entries.emplace_back(
-                        coupling.primary_surface().node(k).dofs[d],
-                        M / row.weight);
+                      entries.emplace_back(coupling.primary_node(k).dofs[d],
+                                           M / row.weight);
                   constraints.add_line(node.dofs[d]);
                   constraints.add_entries(node.dofs[d], entries);
                   constraints.set_inhomogeneity(node.dofs[d], target_defect[d]);
@@ -499,7 +498,7 @@ namespace Common
                           for (const auto &[k, M] : row.primary_weights)
                             if (std::abs(M) > 1e-14 * row.weight)
                               entries.emplace_back(
-                                coupling.primary_surface().node(k).dofs[d],
+                                coupling.primary_node(k).dofs[d],
                                 S(f, d) * M / row.weight);
                         }
                       for (const unsigned int x : fixed_components)
@@ -536,7 +535,7 @@ namespace Common
           for (const auto &[k, M] : row.primary_weights)
             for (unsigned int e = 0; e < dim; ++e)
               if (std::abs(M * row.normal[e]) > 1e-14 * row.weight)
-                entries.emplace_back(coupling.primary_surface().node(k).dofs[e],
+                entries.emplace_back(coupling.primary_node(k).dofs[e],
                                      M * row.normal[e] * scale);
           constraints.add_line(node.dofs[c]);
           constraints.add_entries(node.dofs[c], entries);

@@ -100,6 +100,51 @@ namespace Common
 
 
     template <int dim>
+    double
+    MortarCoupling<dim>::compute_dual_basis(
+      const unsigned int         s,
+      const Quadrature<dim - 1> &face_quadrature,
+      const bool                 axisymmetric,
+      Vector<double>            &De)
+    {
+      const auto ring = [axisymmetric](const Point<dim> &x) {
+        return axisymmetric ? 2. * numbers::PI * x[0] : 1.;
+      };
+      const unsigned int  n_shape = secondary->face(s).nodes.size();
+      std::vector<double> N;
+
+      // Dual basis: A = diag(D_e) Me^{-1}.
+      FullMatrix<double> Me(n_shape, n_shape);
+      De.reinit(n_shape);
+      double face_measure = 0.;
+      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+        {
+          const Point<dim - 1> &eta = face_quadrature.point(q);
+          secondary->shape_values(s, eta, N);
+          const double JxW = secondary->jacobian(s, eta) *
+                             face_quadrature.weight(q) *
+                             ring(secondary->point(s, eta));
+          face_measure += JxW;
+          for (unsigned int a = 0; a < n_shape; ++a)
+            {
+              De(a) += N[a] * JxW;
+              for (unsigned int b = 0; b < n_shape; ++b)
+                Me(a, b) += N[a] * N[b] * JxW;
+            }
+        }
+      FullMatrix<double> Me_inverse(n_shape, n_shape);
+      Me_inverse.invert(Me);
+      FullMatrix<double> &A = dual_coefficients[s];
+      A.reinit(n_shape, n_shape);
+      for (unsigned int a = 0; a < n_shape; ++a)
+        for (unsigned int b = 0; b < n_shape; ++b)
+          A(a, b) = De(a) * Me_inverse(a, b);
+      return face_measure;
+    }
+
+
+
+    template <int dim>
     void
     MortarCoupling<dim>::reinit(const ContactSurface<dim> &secondary_surface,
                                 const ContactSurface<dim> &primary_surface,
@@ -117,6 +162,10 @@ namespace Common
 
       secondary = &secondary_surface;
       primary   = &primary_surface;
+      primary_nodes.resize(primary->n_nodes());
+      for (unsigned int k = 0; k < primary->n_nodes(); ++k)
+        primary_nodes[k] = {primary->node(k).reference_position,
+                            primary->node(k).dofs};
 
       const unsigned int n_nodes = secondary->n_nodes();
       rows.assign(n_nodes, MortarRow<dim>());
@@ -138,33 +187,10 @@ namespace Common
         {
           const SurfaceFace<dim> &face    = secondary->face(s);
           const unsigned int      n_shape = face.nodes.size();
-
-          // Dual basis: A = diag(D_e) Me^{-1}.
-          FullMatrix<double> Me(n_shape, n_shape);
-          Vector<double>     De(n_shape);
-          double             face_measure = 0.;
-          for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-            {
-              const Point<dim - 1> &eta = face_quadrature.point(q);
-              secondary->shape_values(s, eta, N);
-              const double JxW = secondary->jacobian(s, eta) *
-                                 face_quadrature.weight(q) *
-                                 ring(secondary->point(s, eta));
-              face_measure += JxW;
-              for (unsigned int a = 0; a < n_shape; ++a)
-                {
-                  De(a) += N[a] * JxW;
-                  for (unsigned int b = 0; b < n_shape; ++b)
-                    Me(a, b) += N[a] * N[b] * JxW;
-                }
-            }
-          FullMatrix<double> Me_inverse(n_shape, n_shape);
-          Me_inverse.invert(Me);
-          FullMatrix<double> &A = dual_coefficients[s];
-          A.reinit(n_shape, n_shape);
-          for (unsigned int a = 0; a < n_shape; ++a)
-            for (unsigned int b = 0; b < n_shape; ++b)
-              A(a, b) = De(a) * Me_inverse(a, b);
+          Vector<double>          De;
+          const double            face_measure =
+            compute_dual_basis(s, face_quadrature, axisymmetric, De);
+          const FullMatrix<double> &A = dual_coefficients[s];
 
           const double size = secondary->face_size(s);
           for (unsigned int a = 0; a < n_shape; ++a)
@@ -326,9 +352,129 @@ namespace Common
           // and not with the coordinates.
           Tensor<1, dim> d;
           for (const auto &[k, M] : rows[j].primary_weights)
-            d += M * primary->node(k).reference_position;
+            d += M * primary_nodes[k].reference_position;
           d -= rows[j].weight * secondary->node(j).reference_position;
           rows[j].reference_weighted_gap = rows[j].normal * d;
+        }
+    }
+
+
+
+    // Rows against an analytic rigid surface: one primary node per
+    // secondary row, at the dual-weighted mean of the partner points, with
+    // the reference node's DoFs (see the header).
+    template <int dim>
+    void
+    MortarCoupling<dim>::reinit(
+      const ContactSurface<dim>                      &secondary_surface,
+      const RigidSurface<dim>                        &rigid,
+      const std::array<types::global_dof_index, dim> &reference_node_dofs,
+      const double                                    search_distance,
+      const bool                                      axisymmetric)
+    {
+      AssertThrow(dim == 2 || !axisymmetric,
+                  ExcMessage("Axisymmetric mortar coupling needs 2D "
+                             "surfaces."));
+      const auto ring = [axisymmetric](const Point<dim> &x) {
+        return axisymmetric ? 2. * numbers::PI * x[0] : 1.;
+      };
+      secondary = &secondary_surface;
+      primary   = nullptr;
+
+      const unsigned int n_nodes = secondary->n_nodes();
+      rows.assign(n_nodes, MortarRow<dim>());
+      dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
+      std::vector<double>         mass(n_nodes, 0.);
+      std::vector<Tensor<1, dim>> moment(n_nodes);
+      std::vector<bool>           node_covered(n_nodes, true);
+
+      const unsigned int       degree = secondary->base_element().degree;
+      const QGauss<dim - 1>    face_quadrature(degree + 3);
+      const QIterated<dim - 1> pairing_quadrature(QGauss<1>(degree + 3), 4);
+      std::vector<double>      N;
+
+      for (unsigned int s = 0; s < secondary->n_faces(); ++s)
+        {
+          const SurfaceFace<dim> &face    = secondary->face(s);
+          const unsigned int      n_shape = face.nodes.size();
+          Vector<double>          De;
+          compute_dual_basis(s, face_quadrature, axisymmetric, De);
+          const FullMatrix<double> &A    = dual_coefficients[s];
+          const double              size = secondary->face_size(s);
+          for (unsigned int a = 0; a < n_shape; ++a)
+            {
+              rows[face.nodes[a]].weight += De(a);
+              rows[face.nodes[a]].mesh_size =
+                std::max(rows[face.nodes[a]].mesh_size, size);
+            }
+
+          bool covered = true;
+          for (unsigned int q = 0; q < pairing_quadrature.size(); ++q)
+            {
+              const Point<dim - 1> &xi = pairing_quadrature.point(q);
+              secondary->shape_values(s, xi, N);
+              Point<dim>     x;
+              Tensor<1, dim> n;
+              for (unsigned int a = 0; a < n_shape; ++a)
+                {
+                  x += N[a] * secondary->node(face.nodes[a]).position;
+                  n += N[a] * secondary->node(face.nodes[a]).normal;
+                }
+              n /= n.norm();
+              const auto hit = rigid.intersect_ray(x, n, search_distance, size);
+              if (!hit.found || hit.normal * n >= 0.)
+                {
+                  covered = false;
+                  continue;
+                }
+              const double JxW = secondary->jacobian(s, xi) *
+                                 pairing_quadrature.weight(q) * ring(x);
+              for (unsigned int a = 0; a < n_shape; ++a)
+                {
+                  double psi = 0.;
+                  for (unsigned int b = 0; b < n_shape; ++b)
+                    psi += A(a, b) * N[b];
+                  mass[face.nodes[a]] += psi * JxW;
+                  moment[face.nodes[a]] += psi * JxW * hit.point;
+                }
+            }
+          if (!covered)
+            for (unsigned int a = 0; a < n_shape; ++a)
+              node_covered[face.nodes[a]] = false;
+        }
+
+      double largest_weight = 0.;
+      for (const auto &row : rows)
+        largest_weight = std::max(largest_weight, row.weight);
+      primary_nodes.assign(n_nodes, {Point<dim>(), reference_node_dofs});
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        {
+          const SurfaceNode<dim> &node = secondary->node(j);
+          MortarRow<dim>         &row  = rows[j];
+          row.normal                   = node.normal;
+          if (row.weight <= 1e-10 * largest_weight)
+            row.weight = 0.;
+          row.has_partner = node_covered[j] && row.weight > 0. && mass[j] > 0.;
+          // The rigid surface covers the node's faces: sum_k M_jk = D_j
+          // holds by definition of the single partner node.
+          primary_nodes[j].reference_position =
+            mass[j] > 0. ? Point<dim>(moment[j] / mass[j]) :
+                           node.reference_position;
+          if (row.has_partner)
+            {
+              row.primary_weights = {{j, row.weight}};
+              const auto hit      = rigid.intersect_ray(node.position,
+                                                   node.normal,
+                                                   search_distance,
+                                                   row.mesh_size);
+              if (hit.found)
+                row.nodal_gap = hit.t;
+            }
+          row.reference_weighted_gap =
+            row.has_partner ?
+              row.normal * (row.weight * (primary_nodes[j].reference_position -
+                                          node.reference_position)) :
+              0.;
         }
     }
 
@@ -646,7 +792,7 @@ namespace Common
                 {
                   merged[k] += coefficient * value;
                   gap +=
-                    coefficient * value * primary->node(k).reference_position;
+                    coefficient * value * primary_nodes[k].reference_position;
                 }
               gap -= coefficient * source.weight *
                      secondary->node(v).reference_position;
@@ -717,7 +863,27 @@ namespace Common
     const ContactSurface<dim> &
     MortarCoupling<dim>::primary_surface() const
     {
+      AssertThrow(primary != nullptr,
+                  ExcMessage("The primary side is a rigid surface."));
       return *primary;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    MortarCoupling<dim>::n_primary_nodes() const
+    {
+      return primary_nodes.size();
+    }
+
+
+
+    template <int dim>
+    const PrimaryNode<dim> &
+    MortarCoupling<dim>::primary_node(const unsigned int k) const
+    {
+      return primary_nodes[k];
     }
 
 
@@ -733,7 +899,7 @@ namespace Common
       Tensor<1, dim>          d;
       for (const auto &[k, M] : r.primary_weights)
         for (unsigned int c = 0; c < dim; ++c)
-          d[c] += M * u(primary->node(k).dofs[c]);
+          d[c] += M * u(primary_nodes[k].dofs[c]);
       for (unsigned int c = 0; c < dim; ++c)
         d[c] -= r.weight * u(node.dofs[c]);
       return r.reference_weighted_gap + r.normal * d;
@@ -752,7 +918,7 @@ namespace Common
       Tensor<1, dim>          d;
       for (const auto &[k, M] : r.primary_weights)
         for (unsigned int c = 0; c < dim; ++c)
-          d[c] += M * u(primary->node(k).dofs[c]);
+          d[c] += M * u(primary_nodes[k].dofs[c]);
       if (r.weight == 0.)
         return d;
       for (unsigned int c = 0; c < dim; ++c)

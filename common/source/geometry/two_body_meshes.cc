@@ -128,6 +128,29 @@ namespace Common
     template void
     join_bodies(const std::vector<const Triangulation<2> *> &,
                 Triangulation<2> &);
+    template <int dim>
+    types::global_dof_index
+    vertex_dof(const DoFHandler<dim>   &dof_handler,
+               const Point<dim>        &point,
+               const unsigned int       component,
+               const double             tolerance,
+               const std::string       &what,
+               const types::material_id material_id)
+    {
+      types::global_dof_index dof = numbers::invalid_dof_index;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (material_id == numbers::invalid_material_id ||
+            cell->material_id() == material_id)
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).distance(point) < tolerance)
+              dof = cell->vertex_dof_index(v, component);
+      AssertThrow(dof != numbers::invalid_dof_index,
+                  ExcMessage("No mesh vertex at " + what + "."));
+      return dof;
+    }
+
+
+
     template void
     join_bodies(const std::vector<const Triangulation<3> *> &,
                 Triangulation<3> &);
@@ -147,5 +170,19 @@ namespace Common
     template double
     smallest_cell_near(const Triangulation<3> &,
                        const std::function<double(const Point<3> &)> &);
+    template types::global_dof_index
+    vertex_dof(const DoFHandler<2> &,
+               const Point<2> &,
+               const unsigned int,
+               const double,
+               const std::string &,
+               const types::material_id);
+    template types::global_dof_index
+    vertex_dof(const DoFHandler<3> &,
+               const Point<3> &,
+               const unsigned int,
+               const double,
+               const std::string &,
+               const types::material_id);
   } // namespace Geometry
 } // namespace Common

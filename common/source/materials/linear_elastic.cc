@@ -127,6 +127,26 @@ namespace Common
       return mu;
     }
 
+    template <int dim>
+    std::map<types::material_id, LinearElastic<dim>>
+    linear_elastic_materials(
+      const std::vector<std::pair<types::material_id, LinearElasticParameters>>
+        &bodies)
+    {
+      std::map<types::material_id, LinearElastic<dim>> materials;
+      for (const auto &[id, parameters] : bodies)
+        materials.emplace(id, LinearElastic<dim>(parameters));
+      return materials;
+    }
+
+    template std::map<types::material_id, LinearElastic<2>>
+    linear_elastic_materials(
+      const std::vector<std::pair<types::material_id, LinearElasticParameters>>
+        &);
+    template std::map<types::material_id, LinearElastic<3>>
+    linear_elastic_materials(
+      const std::vector<std::pair<types::material_id, LinearElasticParameters>>
+        &);
     template class LinearElastic<2>;
     template class LinearElastic<3>;
   } // namespace Materials

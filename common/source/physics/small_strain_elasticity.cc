@@ -11,16 +11,6 @@ namespace Common
     using namespace dealii;
 
     template <int dim>
-    double
-    measure_factor(const Kinematics kinematics, const Point<dim> &x)
-    {
-      return kinematics == Kinematics::axisymmetric ? 2. * numbers::PI * x[0] :
-                                                      1.;
-    }
-
-
-
-    template <int dim>
     SmallStrainElasticity<dim>::SmallStrainElasticity(
       const Mapping<dim>       &mapping,
       const FiniteElement<dim> &fe,
@@ -49,6 +39,27 @@ namespace Common
 
 
     template <int dim>
+    bool
+    SmallStrainElasticity<dim>::is_linear() const
+    {
+      return true;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::unique_ptr<DataPostprocessor<dim>>>
+    SmallStrainElasticity<dim>::output_postprocessors() const
+    {
+      std::vector<std::unique_ptr<DataPostprocessor<dim>>> postprocessors;
+      postprocessors.push_back(
+        std::make_unique<StressPostprocessor<dim>>(*this));
+      return postprocessors;
+    }
+
+
+
+    template <int dim>
     const Materials::LinearElastic<dim> &
     SmallStrainElasticity<dim>::material(const types::material_id id) const
     {
@@ -66,15 +77,30 @@ namespace Common
     SmallStrainElasticity<dim>::clear()
     {
       cell_matrices.clear();
+      cached_dof_handler = nullptr;
+      cached_n_dofs      = 0;
     }
 
 
 
     template <int dim>
     void
-    SmallStrainElasticity<dim>::compute_cell_matrices(
+    SmallStrainElasticity<dim>::ensure_cell_matrices(
       const DoFHandler<dim> &dof_handler)
     {
+      if (cached_dof_handler == &dof_handler &&
+          cached_n_dofs == dof_handler.n_dofs() &&
+          cell_matrices.size() ==
+            dof_handler.get_triangulation().n_active_cells())
+        return;
+      // Any change of the triangulation (refinement, coarsening, moved
+      // vertices) invalidates the matrices, whatever the cell count.
+      triangulation_changed =
+        dof_handler.get_triangulation().signals.any_change.connect(
+          [this]() { clear(); });
+      cached_dof_handler = &dof_handler;
+      cached_n_dofs      = dof_handler.n_dofs();
+
       const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
       cell_matrices.assign(dof_handler.get_triangulation().n_active_cells(),
                            FullMatrix<double>());
@@ -140,15 +166,13 @@ namespace Common
     template <int dim>
     void
     SmallStrainElasticity<dim>::assemble_system(
-      const DoFHandler<dim>               &dof_handler,
-      const AffineConstraints<double>     &constraints,
-      const TrilinosWrappers::MPI::Vector &u,
-      TrilinosWrappers::SparseMatrix      &matrix,
-      TrilinosWrappers::MPI::Vector       &residual)
+      const DoFHandler<dim>           &dof_handler,
+      const AffineConstraints<double> &constraints,
+      const VectorType                &u,
+      MatrixType                      &matrix,
+      VectorType                      &residual)
     {
-      if (cell_matrices.size() !=
-          dof_handler.get_triangulation().n_active_cells())
-        compute_cell_matrices(dof_handler);
+      ensure_cell_matrices(dof_handler);
 
       const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -178,14 +202,12 @@ namespace Common
     template <int dim>
     void
     SmallStrainElasticity<dim>::assemble_internal_force(
-      const DoFHandler<dim>               &dof_handler,
-      const AffineConstraints<double>     &constraints,
-      const TrilinosWrappers::MPI::Vector &u,
-      TrilinosWrappers::MPI::Vector       &internal_force)
+      const DoFHandler<dim>           &dof_handler,
+      const AffineConstraints<double> &constraints,
+      const VectorType                &u,
+      VectorType                      &internal_force)
     {
-      if (cell_matrices.size() !=
-          dof_handler.get_triangulation().n_active_cells())
-        compute_cell_matrices(dof_handler);
+      ensure_cell_matrices(dof_handler);
 
       const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
@@ -249,10 +271,6 @@ namespace Common
         }
     }
 
-    template double
-    measure_factor(const Kinematics, const Point<2> &);
-    template double
-    measure_factor(const Kinematics, const Point<3> &);
     template class SmallStrainElasticity<2>;
     template class SmallStrainElasticity<3>;
     template class StressPostprocessor<2>;

@@ -9,12 +9,17 @@ namespace Common
     using namespace dealii;
 
     void
-    ContactRunParameters::declare_parameters(ParameterHandler &prm)
+    ContactRunParameters::declare_parameters(
+      ParameterHandler                        &prm,
+      const std::vector<Solvers::LoadChannel> &channels,
+      const std::map<std::string, double>     &default_end_values)
     {
       Contact::ContactParameters::declare_parameters(prm);
       Solvers::NonlinearSolverParameters::declare_parameters(prm);
       Solvers::LinearSolverParameters::declare_parameters(prm);
-      Solvers::LoadSteppingParameters::declare_parameters(prm);
+      Solvers::LoadProgramParameters::declare_parameters(prm,
+                                                         channels,
+                                                         default_end_values);
       IO::OutputParameters::declare_parameters(prm);
       IO::RunControlParameters::declare_parameters(prm);
     }
@@ -22,20 +27,26 @@ namespace Common
 
 
     void
-    ContactRunParameters::parse_parameters(ParameterHandler &prm)
+    ContactRunParameters::parse_parameters(
+      ParameterHandler                        &prm,
+      const std::vector<Solvers::LoadChannel> &channels)
     {
       contact.parse_parameters(prm);
       nonlinear_solver.parse_parameters(prm);
       linear_solver.parse_parameters(prm);
-      load_stepping.parse_parameters(prm);
+      load_program.channels = channels;
+      load_program.parse_parameters(prm);
       output.parse_parameters(prm);
       run_control.parse_parameters(prm);
-      AssertThrow(!(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
-                    contact.friction_law != Contact::FrictionLaw::frictionless),
-                  ExcMessage(
-                    "Linear solver 'cg amg' needs a symmetric system, which "
-                    "friction does not give; use 'gmres amg' or a direct "
-                    "solver."));
+      // Friction with mu = 0 is frictionless and keeps the system
+      // symmetric.
+      AssertThrow(
+        !(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
+          contact.friction_law != Contact::FrictionLaw::frictionless &&
+          contact.friction_coefficient > 0.),
+        ExcMessage("Linear solver 'cg amg' needs a symmetric system, which "
+                   "friction does not give; use 'gmres amg' or a direct "
+                   "solver."));
 
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);

@@ -19,10 +19,14 @@
 
 #include <common/contact/contact_search.h>
 #include <common/contact/contact_surface.h>
+#include <common/contact/rigid_surface.h>
 
+#include <deal.II/base/quadrature.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -62,6 +66,19 @@ namespace Common
     };
 
     /**
+     * @brief A node of the primary side as the mortar rows see it: its
+     * reference position and its DoFs.
+     */
+    template <int dim>
+    struct PrimaryNode
+    {
+      /** Position in the reference configuration (mm). */
+      dealii::Point<dim> reference_position;
+      /** Global DoF index of each displacement component. */
+      std::array<dealii::types::global_dof_index, dim> dofs;
+    };
+
+    /**
      * @brief Mortar operators D (diagonal) and M between two surfaces.
      */
     template <int dim>
@@ -96,6 +113,30 @@ namespace Common
              const ContactSearch<dim>  &search,
              const double               search_distance,
              const bool                 axisymmetric = false);
+
+      /**
+       * @brief Integrate D and the mortar rows against an analytic rigid
+       * surface that moves with the displacement of one reference node.
+       *
+       * Each integration point x of a secondary face (a Gauss rule of
+       * degree + 3 points, iterated over 4 sub-intervals per direction, as
+       * the closest-point map of a profile with corners is not smooth) is
+       * paired with the point $\pi(x)$ where the ray along the
+       * interpolated secondary normal meets the rigid surface. A translation
+       * of the rigid body moves every $\pi(x)$ alike, so row j becomes
+       * $	ilde g_j = n_j\cdot(D_j(ar X_j + u_{ref}) - D_j(X_j + u_j))$
+       * with $ar X_j = \int\psi_j\,\pi(x)/D_j$: one primary node per
+       * row, at $ar X_j$, carrying the reference node's DoFs.
+       * @param[in] reference_node_dofs DoFs of the reference node.
+       * Other parameters as for the meshed reinit().
+       */
+      void
+      reinit(const ContactSurface<dim> &secondary,
+             const RigidSurface<dim>   &primary,
+             const std::array<dealii::types::global_dof_index, dim>
+                         &reference_node_dofs,
+             const double search_distance,
+             const bool   axisymmetric = false);
 
       /**
        * @brief Adapt the rows to the hanging nodes of the secondary
@@ -170,9 +211,19 @@ namespace Common
       const ContactSurface<dim> &
       secondary_surface() const;
 
-      /** @brief The primary surface of the last reinit(). */
+      /** @brief The primary surface of the last reinit(); throws if the
+       * primary side is a rigid surface. */
       const ContactSurface<dim> &
       primary_surface() const;
+
+      /** @brief Number of primary nodes. */
+      unsigned int
+      n_primary_nodes() const;
+
+      /** @brief Primary node @p k, to which MortarRow::primary_weights
+       * refer. */
+      const PrimaryNode<dim> &
+      primary_node(const unsigned int k) const;
 
     private:
       /** 3D: integrate secondary face @p s against its primary faces by
@@ -186,8 +237,19 @@ namespace Common
                             const double              search_distance,
                             const AddPoint           &add_point) const;
 
+      /** Dual basis coefficients of secondary face @p s (stored) and
+       * the integrals \f$\int N_a\f$ of its shape functions (@p De) and of
+       * 1 (returned) with @p quadrature and the ring measure if
+       * @p axisymmetric. */
+      double
+      compute_dual_basis(const unsigned int                 s,
+                         const dealii::Quadrature<dim - 1> &quadrature,
+                         const bool                         axisymmetric,
+                         dealii::Vector<double>            &De);
+
       const ContactSurface<dim>              *secondary = nullptr;
       const ContactSurface<dim>              *primary   = nullptr;
+      std::vector<PrimaryNode<dim>>           primary_nodes;
       std::vector<MortarRow<dim>>             rows;
       std::vector<dealii::FullMatrix<double>> dual_coefficients;
     };

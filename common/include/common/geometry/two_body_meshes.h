@@ -9,9 +9,12 @@
 #define common_geometry_two_body_meshes_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace Common
@@ -57,6 +60,23 @@ namespace Common
     smallest_cell_near(
       const dealii::Triangulation<dim>                        &tria,
       const std::function<double(const dealii::Point<dim> &)> &distance);
+
+    /**
+     * @brief The DoF of displacement component @p component at the mesh
+     * vertex within @p tolerance (mm) of @p point, on a cell of material
+     * @p material_id (any cell if invalid). Every rank finds it (shared
+     * triangulations hold every cell). Throws "No mesh vertex at
+     * <what>." if there is none.
+     */
+    template <int dim>
+    dealii::types::global_dof_index
+    vertex_dof(const dealii::DoFHandler<dim>   &dof_handler,
+               const dealii::Point<dim>        &point,
+               const unsigned int               component,
+               const double                     tolerance,
+               const std::string               &what,
+               const dealii::types::material_id material_id =
+                 dealii::numbers::invalid_material_id);
   } // namespace Geometry
 } // namespace Common
 

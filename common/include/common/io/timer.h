@@ -1,12 +1,14 @@
 /**
  * @file timer.h
- * Wall-clock helper for the per-phase times of summary.json. Times never go
+ * Wall-clock and processor-time helpers for the per-phase times of
+ * summary.json. Times never go
  * to standard output (the test oracle).
  */
 #ifndef common_io_timer_h
 #define common_io_timer_h
 
 #include <chrono>
+#include <ctime>
 
 namespace Common
 {
@@ -19,6 +21,14 @@ namespace Common
       return std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                            start)
         .count();
+    }
+
+    /** @brief Processor time of this process so far (s): unlike wall
+     * time, it does not grow while other processes take the cores. */
+    inline double
+    process_cpu_seconds()
+    {
+      return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
     }
   } // namespace IO
 } // namespace Common

@@ -9,8 +9,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/types.h>
 
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace Common
 {
@@ -81,6 +85,16 @@ namespace Common
       double                          mu;
       dealii::SymmetricTensor<4, dim> stiffness;
     };
+
+    /**
+     * @brief The law of each body, by material id: the map a solid
+     * operator takes, from (material id, parameters) pairs.
+     */
+    template <int dim>
+    std::map<dealii::types::material_id, LinearElastic<dim>>
+    linear_elastic_materials(
+      const std::vector<std::pair<dealii::types::material_id,
+                                  LinearElasticParameters>> &bodies);
   } // namespace Materials
 } // namespace Common
 

@@ -14,6 +14,7 @@
 #define common_physics_small_strain_elasticity_h
 
 #include <common/materials/linear_elastic.h>
+#include <common/physics/solid_operator.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -26,42 +27,29 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <boost/signals2/connection.hpp>
+
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace Common
 {
   namespace Physics
   {
-    /** How the 2D coordinates are read. */
-    enum class Kinematics
-    {
-      /** Plane strain in 2D; the solid itself in 3D. */
-      cartesian,
-      /** Axisymmetric (2D only): x = r, y = z, integrals per full ring. */
-      axisymmetric
-    };
-
-    /**
-     * @brief Factor from the 2D (or 3D) measure to the physical one at
-     * point @p x: \f$2\pi x_0\f$ (mm) for axisymmetric kinematics, 1
-     * otherwise. Multiply the JxW of volume and boundary integrals
-     * (external loads included) by it.
-     */
-    template <int dim>
-    double
-    measure_factor(const Kinematics kinematics, const dealii::Point<dim> &x);
-
     /**
      * @brief Small-strain elasticity on a vector-valued FE_Q space, with a
      * linear elastic law chosen per cell by its material id.
      *
      * The problem is linear, so the cell stiffness matrices are computed
-     * once and kept (for 2D problems, where they are small); every later
-     * assembly only distributes them, with the current constraints.
+     * once and kept; every later assembly only distributes them, with the
+     * current constraints. They are computed again whenever the
+     * triangulation changes (any refinement, coarsening or vertex motion
+     * signals it) or the operator is used with another DoF handler or
+     * number of DoFs.
      */
     template <int dim>
-    class SmallStrainElasticity
+    class SmallStrainElasticity : public SolidOperator<dim>
     {
     public:
       /**
@@ -79,9 +67,16 @@ namespace Common
                        Materials::LinearElastic<dim>> &materials,
         const Kinematics kinematics = Kinematics::cartesian);
 
+      using typename SolidOperator<dim>::VectorType;
+      using typename SolidOperator<dim>::MatrixType;
+
       /** @brief The kinematics of the model. */
       Kinematics
-      kinematics() const;
+      kinematics() const override;
+
+      /** @brief Small-strain elasticity is linear: true. */
+      bool
+      is_linear() const override;
 
       /**
        * @brief Assemble the tangent K and the residual
@@ -93,11 +88,11 @@ namespace Common
        * can be added first.
        */
       void
-      assemble_system(const dealii::DoFHandler<dim>               &dof_handler,
-                      const dealii::AffineConstraints<double>     &constraints,
-                      const dealii::TrilinosWrappers::MPI::Vector &u,
-                      dealii::TrilinosWrappers::SparseMatrix      &matrix,
-                      dealii::TrilinosWrappers::MPI::Vector       &residual);
+      assemble_system(const dealii::DoFHandler<dim>           &dof_handler,
+                      const dealii::AffineConstraints<double> &constraints,
+                      const VectorType                        &u,
+                      MatrixType                              &matrix,
+                      VectorType &residual) override;
 
       /**
        * @brief Internal force vector \f$f_{int}(u) = \int B^T\sigma\f$ (N)
@@ -107,14 +102,18 @@ namespace Common
        */
       void
       assemble_internal_force(
-        const dealii::DoFHandler<dim>               &dof_handler,
-        const dealii::AffineConstraints<double>     &constraints,
-        const dealii::TrilinosWrappers::MPI::Vector &u,
-        dealii::TrilinosWrappers::MPI::Vector       &internal_force);
+        const dealii::DoFHandler<dim>           &dof_handler,
+        const dealii::AffineConstraints<double> &constraints,
+        const VectorType                        &u,
+        VectorType                              &internal_force) override;
 
-      /** @brief Forget the kept cell matrices (after the mesh changed). */
+      /** @brief Forget the kept cell matrices. */
       void
-      clear();
+      clear() override;
+
+      /** @brief The Cauchy stress (StressPostprocessor). */
+      std::vector<std::unique_ptr<dealii::DataPostprocessor<dim>>>
+      output_postprocessors() const override;
 
       /** @brief The law of material id @p id. */
       const Materials::LinearElastic<dim> &
@@ -128,9 +127,16 @@ namespace Common
       const Kinematics                        model_kinematics;
       const dealii::QGauss<dim>               quadrature;
       std::vector<dealii::FullMatrix<double>> cell_matrices;
+      /** What the kept cell matrices were computed for. */
+      const dealii::DoFHandler<dim>  *cached_dof_handler = nullptr;
+      dealii::types::global_dof_index cached_n_dofs      = 0;
+      /** Clears the cell matrices when the triangulation changes. */
+      boost::signals2::scoped_connection triangulation_changed;
 
+      /** Compute the cell matrices unless those kept belong to
+       * @p dof_handler in its current state. */
       void
-      compute_cell_matrices(const dealii::DoFHandler<dim> &dof_handler);
+      ensure_cell_matrices(const dealii::DoFHandler<dim> &dof_handler);
     };
 
 

@@ -1,7 +1,7 @@
 /**
  * @file contact_run_parameters.h
  * The parameter blocks every contact application has: contact, nonlinear
- * and linear solver, load stepping, output and run control. An
+ * and linear solver, load program, output and run control. An
  * application's parameters derive from this and add their own blocks
  * (geometry, mesh, loads, materials).
  */
@@ -12,12 +12,14 @@
 #include <common/io/output_parameters.h>
 #include <common/io/run_control.h>
 #include <common/solvers/linear_solver.h>
-#include <common/solvers/load_stepping.h>
+#include <common/solvers/load_program.h>
 #include <common/solvers/newton_solver.h>
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace Common
 {
@@ -25,23 +27,36 @@ namespace Common
   {
     /**
      * @brief Subsections "Contact", "Nonlinear solver", "Linear solver",
-     * "Load stepping", "Output" and "Run control".
+     * "Load program", "Output" and "Run control".
      */
     struct ContactRunParameters
     {
-      /** @brief Declare the entries of the shared subsections. */
+      /**
+       * @brief Declare the entries of the shared subsections.
+       * @param[in] channels Channels of the load program; by default the
+       * load factor, with the single stage ramping it to 1.
+       * @param[in] default_end_values Default end values of the channels
+       * in stage 1.
+       */
       static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler                &prm,
+                         const std::vector<Solvers::LoadChannel> &channels =
+                           {Solvers::load_factor_channel()},
+                         const std::map<std::string, double>
+                           &default_end_values = {{"Load factor", 1.}});
 
       /** @brief Read and check the entries of the shared subsections, and
-       * keep the whole input as used_parameters. */
+       * keep the whole input as used_parameters.
+       * @param[in] channels The channels given to declare_parameters(). */
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler                &prm,
+                       const std::vector<Solvers::LoadChannel> &channels = {
+                         Solvers::load_factor_channel()});
 
       Contact::ContactParameters         contact;
       Solvers::NonlinearSolverParameters nonlinear_solver;
       Solvers::LinearSolverParameters    linear_solver;
-      Solvers::LoadSteppingParameters    load_stepping;
+      Solvers::LoadProgramParameters     load_program;
       IO::OutputParameters               output;
       IO::RunControlParameters           run_control;
 

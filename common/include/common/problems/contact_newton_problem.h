@@ -1,22 +1,24 @@
 /**
- * @file small_strain_contact_problem.h
- * A small-strain elastic problem with one mortar contact pair, solved by
- * the semismooth Newton method: contact set-up, the sparsity pattern that
- * serves every active set, one Newton iteration (constraints, assembly,
- * solve), the residuals with pressure recovery, and commit/restore for load
- * stepping. Wires physics/, contact/ and solvers/ together; owns no mesh,
- * boundary condition or load, which the application supplies.
+ * @file contact_newton_problem.h
+ * One contact-Newton problem for every scene: a solid operator (any
+ * kinematics and material) and one contact pair (any contact geometry,
+ * normal enforcement and friction law), solved by the semismooth Newton
+ * method at the states of a load program. Owns the constraints, the
+ * sparsity pattern, the linear system and the Newton callbacks, and
+ * commits or restores the state of the solid and of the contact together.
+ * Knows no mesh, boundary condition or load, which the application
+ * supplies.
  */
-#ifndef common_problems_small_strain_contact_problem_h
-#define common_problems_small_strain_contact_problem_h
+#ifndef common_problems_contact_newton_problem_h
+#define common_problems_contact_newton_problem_h
 
 #include <common/contact/contact_enforcement.h>
+#include <common/contact/contact_geometry.h>
 #include <common/contact/contact_parameters.h>
-#include <common/contact/contact_search.h>
-#include <common/contact/contact_surface.h>
 #include <common/contact/mortar_coupling.h>
-#include <common/physics/small_strain_elasticity.h>
+#include <common/physics/solid_operator.h>
 #include <common/solvers/linear_solver.h>
+#include <common/solvers/load_program.h>
 #include <common/solvers/newton_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -36,31 +38,32 @@ namespace Common
   namespace Problems
   {
     /**
-     * @brief External load of a problem, scaled by the load factor.
+     * @brief External load of a problem at a state of the load program.
      */
     struct ExternalLoad
     {
-      /** Add \f$f_{ext}\f$ at @p load_factor to the vector, distributed
-       * through the given constraints; not compressed (N). */
-      std::function<void(const double                             load_factor,
+      /** Add \f$f_{ext}\f$ at @p state to the vector, distributed through
+       * the given constraints; not compressed (N). */
+      std::function<void(const Solvers::LoadState                &state,
                          const dealii::AffineConstraints<double> &constraints,
                          dealii::TrilinosWrappers::MPI::Vector   &vector)>
         add;
-      /** Size of the load at @p load_factor, the scale of the relative
+      /** Size of the load at @p state, the scale of the relative
        * residuals (N). */
-      std::function<double(const double load_factor)> magnitude;
-      /** Optional: prescribed displacements at @p load_factor (mm), for
-       * DoFs that carry a (homogeneous) Dirichlet constraint in the
-       * constraints given to setup(); the first Newton iteration of a
-       * load step moves them there. */
+      std::function<double(const Solvers::LoadState &state)> magnitude;
+      /** Optional: prescribed displacements at @p state (mm), for DoFs
+       * that carry a (homogeneous) Dirichlet constraint in the constraints
+       * given to setup(); the first Newton iteration of a step moves them
+       * there. */
       std::function<
-        void(const double                                       load_factor,
+        void(const Solvers::LoadState                          &state,
              std::map<dealii::types::global_dof_index, double> &values)>
         prescribed_displacements;
     };
 
     /**
-     * @brief Wall time per phase of the contact solve (s).
+     * @brief Time per phase of the contact solve (s): wall time, and the
+     * processor time of the Newton solves.
      */
     struct ContactSolveTimes
     {
@@ -70,28 +73,34 @@ namespace Common
       double linear_solve      = 0.;
       double residual          = 0.;
       double active_set_update = 0.;
+      /** Processor time of contact set-up and Newton solves. */
+      double contact_cpu = 0.;
     };
 
     /**
-     * @brief Small-strain elasticity with one mortar contact pair.
+     * @brief A solid with one contact pair, solved by the semismooth
+     * Newton method.
      */
     template <int dim>
-    class SmallStrainContactProblem
+    class ContactNewtonProblem
     {
     public:
       /**
        * @param[in] dof_handler DoFs of the displacement (distributed).
-       * @param[in] mapping Geometry mapping of the contact surfaces.
-       * @param[in] physics Bulk terms.
-       * @param[in] contact Contact pair and enforcement.
+       * @param[in] mapping Geometry mapping (rigid-body modes for
+       * multigrid).
+       * @param[in] solid Bulk terms.
+       * @param[in] geometry Geometry of the contact pair.
+       * @param[in] contact Enforcement and friction parameters.
        * @param[in] reference_modulus Scales the complementarity constant
        * (MPa), usually the secondary body's Young's modulus.
        * All references must outlive this object.
        */
-      SmallStrainContactProblem(
+      ContactNewtonProblem(
         const dealii::DoFHandler<dim>            &dof_handler,
         const dealii::Mapping<dim>               &mapping,
-        Physics::SmallStrainElasticity<dim>      &physics,
+        Physics::SolidOperator<dim>              &solid,
+        Contact::ContactGeometry<dim>            &geometry,
         const Contact::ContactParameters         &contact,
         const Solvers::LinearSolverParameters    &linear_solver,
         const Solvers::NonlinearSolverParameters &nonlinear_solver,
@@ -99,9 +108,8 @@ namespace Common
         const MPI_Comm                            mpi_communicator);
 
       /**
-       * @brief Build the contact surfaces, the mortar coupling (reference
-       * configuration), the initial active set, the sparsity pattern and
-       * the vectors.
+       * @brief Build the contact geometry, the initial active set, the
+       * sparsity pattern that serves every active set, and the vectors.
        * @param[in] constraints Hanging-node and homogeneous Dirichlet
        * constraints (they act on Newton increments), closed.
        */
@@ -109,16 +117,17 @@ namespace Common
       setup(const dealii::AffineConstraints<double> &constraints);
 
       /**
-       * @brief Solve at @p load_factor from the current state by the
-       * semismooth Newton method.
+       * @brief Solve at @p state from the current state by the semismooth
+       * Newton method.
        * @param[in] verbose Stream for the residual history.
        */
       Solvers::NewtonStatistics
-      solve(const double                load_factor,
+      solve(const Solvers::LoadState   &state,
             const ExternalLoad         &load,
             dealii::ConditionalOStream &verbose);
 
-      /** @brief Keep the current state as the last accepted one. */
+      /** @brief Keep the current state (displacement, material state,
+       * contact state and friction history) as the last accepted one. */
       void
       commit();
 
@@ -127,13 +136,15 @@ namespace Common
       restore();
 
       /**
-       * @brief Time one assembly (cell matrices included) and one solve
-       * with the current active set held fixed, the least any contact
-       * solver must pay; the state is left unchanged (s).
+       * @brief Processor time of one assembly (cell matrices included) and
+       * one solve with the current active set held fixed, the least any
+       * contact solver must pay: the median of @p n_repeats measurements.
+       * The state is left unchanged (s).
        */
       double
-      time_fixed_active_set_solve(const double        load_factor,
-                                  const ExternalLoad &load);
+      time_fixed_active_set_solve(const Solvers::LoadState &state,
+                                  const ExternalLoad       &load,
+                                  const unsigned int        n_repeats = 3);
 
       /** @brief Displacement (mm), every entry readable. */
       const dealii::TrilinosWrappers::MPI::Vector &
@@ -148,6 +159,10 @@ namespace Common
       const Contact::MortarCoupling<dim> &
       coupling() const;
 
+      /** @brief The contact geometry. */
+      const Contact::ContactGeometry<dim> &
+      contact_geometry() const;
+
       /** @brief The enforcement, with pressures and active set. */
       const Contact::ContactEnforcement<dim> &
       enforcement() const;
@@ -156,27 +171,47 @@ namespace Common
       const Contact::ContactSurface<dim> &
       secondary_surface() const;
 
-      /** @brief Wall time per phase so far. */
+      /** @brief The solid operator. */
+      const Physics::SolidOperator<dim> &
+      solid() const;
+
+      /** @brief Time per phase so far. */
       const ContactSolveTimes &
       times() const;
 
     private:
+      /** Build the sparsity pattern and the matrices for the current
+       * coupling. */
+      void
+      setup_matrices();
+
       /** One Newton iteration; returns the relative norm of the update. */
       double
-      assemble_and_solve(const double load_factor, const ExternalLoad &load);
+      assemble_and_solve(const Solvers::LoadState &state,
+                         const ExternalLoad       &load);
 
       Solvers::NewtonResidual
-      evaluate_residual(const double load_factor, const ExternalLoad &load);
+      evaluate_residual(const Solvers::LoadState &state,
+                        const ExternalLoad       &load);
 
       /** f_ext - f_int at the current state, condensed with the Dirichlet
        * and hanging-node constraints (N): stored, ghosted, in
        * residual_vector and returned as a compressed owned vector. */
       dealii::TrilinosWrappers::MPI::Vector
-      compute_bulk_residual(const double load_factor, const ExternalLoad &load);
+      compute_bulk_residual(const Solvers::LoadState &state,
+                            const ExternalLoad       &load);
+
+      /** The bulk tangent condensed with the Dirichlet and hanging-node
+       * constraints only (friction needs the stiffness rows of slipping
+       * nodes): assembled once for a linear solid, at every iteration
+       * otherwise. */
+      void
+      assemble_bulk_matrix();
 
       const dealii::DoFHandler<dim>           &dof_handler;
       const dealii::Mapping<dim>              &mapping;
-      Physics::SmallStrainElasticity<dim>     &physics;
+      Physics::SolidOperator<dim>             &solid_operator;
+      Contact::ContactGeometry<dim>           &geometry;
       const Contact::ContactParameters         contact_parameters;
       const Solvers::NonlinearSolverParameters nonlinear_solver_parameters;
       const double                             reference_modulus;
@@ -185,19 +220,13 @@ namespace Common
       dealii::IndexSet locally_owned_dofs;
       dealii::IndexSet locally_relevant_dofs;
 
-      std::unique_ptr<Contact::ContactSurface<dim>>     primary;
-      std::unique_ptr<Contact::ContactSurface<dim>>     secondary;
-      std::unique_ptr<Contact::ContactSearch<dim>>      search;
-      Contact::MortarCoupling<dim>                      mortar;
       std::unique_ptr<Contact::ContactEnforcement<dim>> contact_enforcement;
 
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
       dealii::AffineConstraints<double> constraints;
       dealii::TrilinosWrappers::SparseMatrix system_matrix;
-      /** Bulk tangent condensed with the Dirichlet and hanging-node
-       * constraints only (friction needs the stiffness rows of slipping
-       * nodes); constant in small-strain elasticity. */
       dealii::TrilinosWrappers::SparseMatrix bulk_matrix;
+      bool                                   bulk_matrix_current = false;
       dealii::TrilinosWrappers::MPI::Vector  solution;
       dealii::TrilinosWrappers::MPI::Vector  solution_owned;
       dealii::TrilinosWrappers::MPI::Vector  accepted_solution;

@@ -1,12 +1,14 @@
 #include <common/io/timer.h>
 #include <common/physics/rigid_body.h>
-#include <common/problems/small_strain_contact_problem.h>
+#include <common/problems/contact_newton_problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <algorithm>
 #include <chrono>
+#include <vector>
 
 namespace Common
 {
@@ -15,10 +17,11 @@ namespace Common
     using namespace dealii;
 
     template <int dim>
-    SmallStrainContactProblem<dim>::SmallStrainContactProblem(
+    ContactNewtonProblem<dim>::ContactNewtonProblem(
       const DoFHandler<dim>                    &dof_handler,
       const Mapping<dim>                       &mapping,
-      Physics::SmallStrainElasticity<dim>      &physics,
+      Physics::SolidOperator<dim>              &solid,
+      Contact::ContactGeometry<dim>            &geometry,
       const Contact::ContactParameters         &contact,
       const Solvers::LinearSolverParameters    &linear_solver,
       const Solvers::NonlinearSolverParameters &nonlinear_solver,
@@ -26,7 +29,8 @@ namespace Common
       const MPI_Comm                            mpi_communicator)
       : dof_handler(dof_handler)
       , mapping(mapping)
-      , physics(physics)
+      , solid_operator(solid)
+      , geometry(geometry)
       , contact_parameters(contact)
       , nonlinear_solver_parameters(nonlinear_solver)
       , reference_modulus(reference_modulus)
@@ -36,13 +40,9 @@ namespace Common
 
 
 
-    // Small strain: the contact geometry is evaluated once, in the
-    // reference configuration. One sparsity pattern serves every active
-    // set: it holds the couplings that any closed node's constraint (or
-    // penalty term) can create.
     template <int dim>
     void
-    SmallStrainContactProblem<dim>::setup(
+    ContactNewtonProblem<dim>::setup(
       const AffineConstraints<double> &base_constraints)
     {
       locally_owned_dofs    = dof_handler.locally_owned_dofs();
@@ -63,31 +63,39 @@ namespace Common
                              locally_relevant_dofs,
                              mpi_communicator);
 
-      const auto start = std::chrono::steady_clock::now();
-      secondary        = std::make_unique<Contact::ContactSurface<dim>>(
-        dof_handler,
-        mapping,
-        contact_parameters.secondary_boundary_id);
-      primary = std::make_unique<Contact::ContactSurface<dim>>(
-        dof_handler,
-        mapping,
-        contact_parameters.primary_boundary_id);
-      search = std::make_unique<Contact::ContactSearch<dim>>(*primary, 0.);
-      mortar.reinit(*secondary,
-                    *primary,
-                    *search,
-                    contact_parameters.search_distance,
-                    physics.kinematics() == Physics::Kinematics::axisymmetric);
-      mortar.condense_hanging_nodes(constraints_dirichlet_and_hanging_nodes);
+      const auto   start     = std::chrono::steady_clock::now();
+      const double cpu_start = IO::process_cpu_seconds();
+      geometry.reinit(constraints_dirichlet_and_hanging_nodes);
       contact_enforcement =
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
-                                                           mortar,
+                                                           geometry.coupling(),
                                                            reference_modulus);
       contact_enforcement->mark_constrained_nodes(
         constraints_dirichlet_and_hanging_nodes);
       contact_enforcement->initialize_active_set();
       solve_times.contact_setup = IO::seconds_since(start);
+      solve_times.contact_cpu   = IO::process_cpu_seconds() - cpu_start;
 
+      setup_matrices();
+      linear_solver.reset();
+      if (linear_solver.uses_multigrid())
+        linear_solver.set_near_null_space(
+          Physics::rigid_body_modes(mapping,
+                                    dof_handler,
+                                    solid_operator.kinematics() !=
+                                      Physics::Kinematics::axisymmetric),
+          dim);
+    }
+
+
+
+    // One sparsity pattern serves every active set: it holds the couplings
+    // that any closed node's constraint (or penalty or friction term) can
+    // create with the current mortar rows.
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::setup_matrices()
+    {
       DynamicSparsityPattern dsp(locally_relevant_dofs);
       DoFTools::make_sparsity_pattern(dof_handler,
                                       dsp,
@@ -107,27 +115,32 @@ namespace Common
                            locally_owned_dofs,
                            dsp,
                            mpi_communicator);
-      linear_solver.reset();
-      if (linear_solver.uses_multigrid())
-        linear_solver.set_near_null_space(
-          Physics::rigid_body_modes(mapping,
-                                    dof_handler,
-                                    physics.kinematics() !=
-                                      Physics::Kinematics::axisymmetric),
-          dim);
-
+      bulk_matrix_current = false;
       if (contact_enforcement->has_friction())
         {
           bulk_matrix.reinit(system_matrix);
-          TrilinosWrappers::MPI::Vector unused(locally_owned_dofs,
-                                               mpi_communicator);
-          physics.assemble_system(dof_handler,
-                                  constraints_dirichlet_and_hanging_nodes,
-                                  solution,
-                                  bulk_matrix,
-                                  unused);
-          bulk_matrix.compress(VectorOperation::add);
+          assemble_bulk_matrix();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::assemble_bulk_matrix()
+    {
+      if (bulk_matrix_current)
+        return;
+      bulk_matrix = 0.;
+      TrilinosWrappers::MPI::Vector unused(locally_owned_dofs,
+                                           mpi_communicator);
+      solid_operator.assemble_system(dof_handler,
+                                     constraints_dirichlet_and_hanging_nodes,
+                                     solution,
+                                     bulk_matrix,
+                                     unused);
+      bulk_matrix.compress(VectorOperation::add);
+      bulk_matrix_current = solid_operator.is_linear();
     }
 
 
@@ -138,19 +151,25 @@ namespace Common
     // external load; friction or penalty terms if selected.
     template <int dim>
     double
-    SmallStrainContactProblem<dim>::assemble_and_solve(const double load_factor,
-                                                       const ExternalLoad &load)
+    ContactNewtonProblem<dim>::assemble_and_solve(
+      const Solvers::LoadState &state,
+      const ExternalLoad       &load)
     {
       const auto start = std::chrono::steady_clock::now();
+      if (geometry.update(solution))
+        setup_matrices();
       if (contact_enforcement->has_friction())
-        compute_bulk_residual(load_factor, load);
+        {
+          assemble_bulk_matrix();
+          compute_bulk_residual(state, load);
+        }
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
       constraints.merge(constraints_dirichlet_and_hanging_nodes);
       if (load.prescribed_displacements)
         {
           std::map<types::global_dof_index, double> values;
-          load.prescribed_displacements(load_factor, values);
+          load.prescribed_displacements(state, values);
           for (const auto &[dof, value] : values)
             {
               AssertThrow(constraints.is_constrained(dof),
@@ -166,12 +185,12 @@ namespace Common
 
       system_matrix = 0.;
       system_rhs    = 0.;
-      physics.assemble_system(dof_handler,
-                              constraints,
-                              solution,
-                              system_matrix,
-                              system_rhs);
-      load.add(load_factor, constraints, system_rhs);
+      solid_operator.assemble_system(dof_handler,
+                                     constraints,
+                                     solution,
+                                     system_matrix,
+                                     system_rhs);
+      load.add(state, constraints, system_rhs);
       if (contact_parameters.enforcement == Contact::Enforcement::penalty)
         contact_enforcement->assemble_penalty(constraints,
                                               solution,
@@ -195,7 +214,9 @@ namespace Common
       constraints.distribute(newton_update);
       solve_times.linear_solve += IO::seconds_since(solve_start);
       solution_owned += newton_update;
-      solution                  = solution_owned;
+      solution = solution_owned;
+      // A nonlinear solid's tangent belongs to the new state.
+      bulk_matrix_current = bulk_matrix_current && solid_operator.is_linear();
       const double update_norm  = newton_update.l2_norm();
       const double current_norm = solution_owned.l2_norm();
       return current_norm > 0. ? update_norm / current_norm :
@@ -206,21 +227,22 @@ namespace Common
 
     template <int dim>
     TrilinosWrappers::MPI::Vector
-    SmallStrainContactProblem<dim>::compute_bulk_residual(
-      const double        load_factor,
-      const ExternalLoad &load)
+    ContactNewtonProblem<dim>::compute_bulk_residual(
+      const Solvers::LoadState &state,
+      const ExternalLoad       &load)
     {
       // f_ext - f_int condensed as the linear system is: hanging-node
       // forces on their parents (a secondary node may be one), Dirichlet
       // rows zero (support reactions are no contact tractions).
       TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
-      physics.assemble_internal_force(dof_handler,
-                                      constraints_dirichlet_and_hanging_nodes,
-                                      solution,
-                                      r);
+      solid_operator.assemble_internal_force(
+        dof_handler,
+        constraints_dirichlet_and_hanging_nodes,
+        solution,
+        r);
       r.compress(VectorOperation::add);
       r *= -1.;
-      load.add(load_factor, constraints_dirichlet_and_hanging_nodes, r);
+      load.add(state, constraints_dirichlet_and_hanging_nodes, r);
       r.compress(VectorOperation::add);
       residual_vector = r;
       return r;
@@ -233,15 +255,15 @@ namespace Common
     // normal and tangential complementarity functions.
     template <int dim>
     Solvers::NewtonResidual
-    SmallStrainContactProblem<dim>::evaluate_residual(const double load_factor,
-                                                      const ExternalLoad &load)
+    ContactNewtonProblem<dim>::evaluate_residual(
+      const Solvers::LoadState &state,
+      const ExternalLoad       &load)
     {
       const auto start = std::chrono::steady_clock::now();
       // A compressed vector: contact forces are added on the ranks that own
       // contact nodes only, and the final compress() is the one collective
       // step.
-      TrilinosWrappers::MPI::Vector r =
-        compute_bulk_residual(load_factor, load);
+      TrilinosWrappers::MPI::Vector r = compute_bulk_residual(state, load);
 
       contact_enforcement->update_pressures(solution, residual_vector);
       contact_enforcement->add_contact_forces(
@@ -251,7 +273,7 @@ namespace Common
       r.compress(VectorOperation::add);
       constraints_dirichlet_and_hanging_nodes.set_zero(r);
 
-      const double            scale = load.magnitude(load_factor);
+      const double            scale = load.magnitude(state);
       Solvers::NewtonResidual residual;
       residual.equilibrium = r.l2_norm() / scale;
       residual.complementarity =
@@ -264,18 +286,19 @@ namespace Common
 
     template <int dim>
     Solvers::NewtonStatistics
-    SmallStrainContactProblem<dim>::solve(const double        load_factor,
-                                          const ExternalLoad &load,
-                                          ConditionalOStream &verbose)
+    ContactNewtonProblem<dim>::solve(const Solvers::LoadState &state,
+                                     const ExternalLoad       &load,
+                                     ConditionalOStream       &verbose)
     {
-      const auto start = std::chrono::steady_clock::now();
+      const auto   start     = std::chrono::steady_clock::now();
+      const double cpu_start = IO::process_cpu_seconds();
       contact_enforcement->begin_step();
       Solvers::NewtonCallbacks callbacks;
       callbacks.assemble_solve_and_update = [&]() {
-        return assemble_and_solve(load_factor, load);
+        return assemble_and_solve(state, load);
       };
       callbacks.evaluate_residual = [&]() {
-        return evaluate_residual(load_factor, load);
+        return evaluate_residual(state, load);
       };
       callbacks.update_active_set = [&]() {
         const auto         t = std::chrono::steady_clock::now();
@@ -291,6 +314,7 @@ namespace Common
       const auto statistics =
         Solvers::solve_newton(nonlinear_solver_parameters, callbacks, verbose);
       solve_times.newton += IO::seconds_since(start);
+      solve_times.contact_cpu += IO::process_cpu_seconds() - cpu_start;
       return statistics;
     }
 
@@ -298,9 +322,10 @@ namespace Common
 
     template <int dim>
     void
-    SmallStrainContactProblem<dim>::commit()
+    ContactNewtonProblem<dim>::commit()
     {
       accepted_solution = solution_owned;
+      solid_operator.commit(dof_handler, solution);
       contact_enforcement->commit(solution);
     }
 
@@ -308,10 +333,12 @@ namespace Common
 
     template <int dim>
     void
-    SmallStrainContactProblem<dim>::restore()
+    ContactNewtonProblem<dim>::restore()
     {
-      solution_owned = accepted_solution;
-      solution       = solution_owned;
+      solution_owned      = accepted_solution;
+      solution            = solution_owned;
+      bulk_matrix_current = bulk_matrix_current && solid_operator.is_linear();
+      solid_operator.restore();
       contact_enforcement->restore();
     }
 
@@ -319,28 +346,36 @@ namespace Common
 
     template <int dim>
     double
-    SmallStrainContactProblem<dim>::time_fixed_active_set_solve(
-      const double        load_factor,
-      const ExternalLoad &load)
+    ContactNewtonProblem<dim>::time_fixed_active_set_solve(
+      const Solvers::LoadState &state,
+      const ExternalLoad       &load,
+      const unsigned int        n_repeats)
     {
       const TrilinosWrappers::MPI::Vector converged = solution_owned;
       const ContactSolveTimes             kept      = solve_times;
-      physics.clear();
-      linear_solver.reset();
-      const auto start = std::chrono::steady_clock::now();
-      assemble_and_solve(load_factor, load);
-      const double time = IO::seconds_since(start);
-      solution_owned    = converged;
-      solution          = solution_owned;
-      solve_times       = kept;
-      return time;
+      std::vector<double>                 times;
+      for (unsigned int i = 0; i < std::max(1u, n_repeats); ++i)
+        {
+          solid_operator.clear();
+          linear_solver.reset();
+          const double start = IO::process_cpu_seconds();
+          assemble_and_solve(state, load);
+          times.push_back(IO::process_cpu_seconds() - start);
+          solution_owned = converged;
+          solution       = solution_owned;
+        }
+      solve_times = kept;
+      std::nth_element(times.begin(),
+                       times.begin() + times.size() / 2,
+                       times.end());
+      return times[times.size() / 2];
     }
 
 
 
     template <int dim>
     const TrilinosWrappers::MPI::Vector &
-    SmallStrainContactProblem<dim>::displacement() const
+    ContactNewtonProblem<dim>::displacement() const
     {
       return solution;
     }
@@ -349,7 +384,7 @@ namespace Common
 
     template <int dim>
     const TrilinosWrappers::MPI::Vector &
-    SmallStrainContactProblem<dim>::bulk_residual() const
+    ContactNewtonProblem<dim>::bulk_residual() const
     {
       return residual_vector;
     }
@@ -358,16 +393,34 @@ namespace Common
 
     template <int dim>
     const Contact::MortarCoupling<dim> &
-    SmallStrainContactProblem<dim>::coupling() const
+    ContactNewtonProblem<dim>::coupling() const
     {
-      return mortar;
+      return geometry.coupling();
+    }
+
+
+
+    template <int dim>
+    const Contact::ContactGeometry<dim> &
+    ContactNewtonProblem<dim>::contact_geometry() const
+    {
+      return geometry;
+    }
+
+
+
+    template <int dim>
+    const Physics::SolidOperator<dim> &
+    ContactNewtonProblem<dim>::solid() const
+    {
+      return solid_operator;
     }
 
 
 
     template <int dim>
     const Contact::ContactEnforcement<dim> &
-    SmallStrainContactProblem<dim>::enforcement() const
+    ContactNewtonProblem<dim>::enforcement() const
     {
       return *contact_enforcement;
     }
@@ -376,21 +429,21 @@ namespace Common
 
     template <int dim>
     const Contact::ContactSurface<dim> &
-    SmallStrainContactProblem<dim>::secondary_surface() const
+    ContactNewtonProblem<dim>::secondary_surface() const
     {
-      return *secondary;
+      return geometry.coupling().secondary_surface();
     }
 
 
 
     template <int dim>
     const ContactSolveTimes &
-    SmallStrainContactProblem<dim>::times() const
+    ContactNewtonProblem<dim>::times() const
     {
       return solve_times;
     }
 
-    template class SmallStrainContactProblem<2>;
-    template class SmallStrainContactProblem<3>;
+    template class ContactNewtonProblem<2>;
+    template class ContactNewtonProblem<3>;
   } // namespace Problems
 } // namespace Common

@@ -1,0 +1,40 @@
+#include <common/physics/solid_operator.h>
+
+#include <deal.II/base/numbers.h>
+
+namespace Common
+{
+  namespace Physics
+  {
+    using namespace dealii;
+
+    template <int dim>
+    double
+    measure_factor(const Kinematics kinematics, const Point<dim> &x)
+    {
+      return kinematics == Kinematics::axisymmetric ? 2. * numbers::PI * x[0] :
+                                                      1.;
+    }
+
+
+
+    template <int dim>
+    void
+    SolidOperator<dim>::commit(const DoFHandler<dim> &, const VectorType &)
+    {}
+
+
+
+    template <int dim>
+    void
+    SolidOperator<dim>::restore()
+    {}
+
+    template double
+    measure_factor(const Kinematics, const Point<2> &);
+    template double
+    measure_factor(const Kinematics, const Point<3> &);
+    template class SolidOperator<2>;
+    template class SolidOperator<3>;
+  } // namespace Physics
+} // namespace Common

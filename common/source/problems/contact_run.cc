@@ -1,0 +1,314 @@
+#include <common/contact/contact_postprocessor.h>
+#include <common/geometry/two_body_meshes.h>
+#include <common/io/solution_output.h>
+#include <common/io/timer.h>
+#include <common/problems/contact_run.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace Common
+{
+  namespace Problems
+  {
+    using namespace dealii;
+
+    IO::JsonObject
+    newton_summary(const Solvers::LoadSteppingStatistics &stepping)
+    {
+      unsigned int total_iterations = 0, max_iterations = 0;
+      for (const auto n : stepping.newton_iterations)
+        {
+          total_iterations += n;
+          max_iterations = std::max(max_iterations, n);
+        }
+      IO::JsonObject newton;
+      newton.set("total_iterations", total_iterations)
+        .set("max_iterations_per_step", max_iterations)
+        .set("iterations_per_step", stepping.newton_iterations)
+        .set("n_cutbacks", stepping.n_cutbacks)
+        .set("n_steps_converged_on_step_tolerance",
+             stepping.n_converged_on_step);
+      return newton;
+    }
+
+
+
+    IO::JsonObject
+    case_summary(const ContactRunParameters &parameters,
+                 const unsigned int          element_degree,
+                 const MPI_Comm              mpi_communicator)
+    {
+      const auto &contact = parameters.contact;
+      const bool penalty = contact.enforcement == Contact::Enforcement::penalty;
+      IO::JsonObject description;
+      description.set("element_degree", element_degree)
+        .set("enforcement", penalty ? "penalty" : "lagrange multiplier")
+        .set("friction_law",
+             contact.friction_law == Contact::FrictionLaw::frictionless ||
+                 contact.friction_coefficient == 0. ?
+               "frictionless" :
+               "coulomb")
+        .set("friction_coefficient", contact.friction_coefficient)
+        .set("n_load_steps", parameters.load_program.n_steps())
+        .set("n_load_stages",
+             static_cast<unsigned int>(parameters.load_program.stages.size()))
+        .set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(mpi_communicator));
+      if (penalty)
+        description.set("penalty_stiffness_MPa_per_mm",
+                        contact.penalty_stiffness);
+      return description;
+    }
+
+
+
+    template <int dim>
+    IO::JsonObject
+    mesh_summary(const DoFHandler<dim>                           &dof_handler,
+                 const std::function<double(const Point<dim> &)> &distance)
+    {
+      IO::JsonObject mesh;
+      mesh
+        .set("n_active_cells", dof_handler.get_triangulation().n_active_cells())
+        .set("n_dofs", dof_handler.n_dofs())
+        .set("smallest_cell_in_contact_zone_mm",
+             Geometry::smallest_cell_near<dim>(dof_handler.get_triangulation(),
+                                               distance));
+      return mesh;
+    }
+
+
+
+    template <int dim>
+    void
+    print_setup(IO::Console                     &console,
+                const DoFHandler<dim>           &dof_handler,
+                const ContactNewtonProblem<dim> &problem)
+    {
+      const auto  &coupling = problem.coupling();
+      unsigned int n_paired = 0;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        n_paired += coupling.row(j).has_partner;
+      console.stream() << "Mesh: "
+                       << dof_handler.get_triangulation().n_active_cells()
+                       << " active cells, " << dof_handler.n_dofs()
+                       << " degrees of freedom, Q"
+                       << dof_handler.get_fe().degree << std::endl
+                       << "Contact: " << coupling.n_rows()
+                       << " secondary nodes, " << n_paired << " paired, "
+                       << problem.enforcement().n_active()
+                       << " initially closed" << std::endl;
+    }
+
+
+
+    template <int dim>
+    bool
+    begin_run(IO::Console                     &console,
+              const DoFHandler<dim>           &dof_handler,
+              const ContactNewtonProblem<dim> &problem,
+              const ContactRunParameters      &parameters,
+              const std::vector<std::string>  &result_files)
+    {
+      print_setup<dim>(console, dof_handler, problem);
+      if (parameters.run_control.dry_run)
+        {
+          console.stream() << "Dry run: parameters, mesh and contact pairing "
+                              "are valid."
+                           << std::endl;
+          return false;
+        }
+      std::vector<std::string> files = result_files;
+      files.push_back("used_parameters.prm");
+      parameters.output.prepare_directory(files,
+                                          dof_handler.get_communicator());
+      if (console.is_root())
+        {
+          std::ofstream used(parameters.output.path("used_parameters.prm"));
+          used << parameters.used_parameters;
+        }
+      return true;
+    }
+
+
+
+    template <int dim>
+    void
+    print_step(IO::Console                     &console,
+               const Solvers::StepInfo         &step,
+               const Solvers::NewtonStatistics &statistics,
+               const ContactNewtonProblem<dim> &problem)
+    {
+      const auto &values = step.state.values;
+      const bool  load_factor_only =
+        step.n_stages == 1 && values.size() == 1 &&
+        values.begin()->first == Solvers::load_factor_channel().name;
+      auto &out = console.stream();
+      if (load_factor_only)
+        out << "Load step " << step.step_in_stage << " of "
+            << std::max(step.step_in_stage, step.n_steps_in_stage)
+            << ", load factor "
+            << IO::Console::format(step.state.load_factor());
+      else
+        out << "Stage " << step.stage + 1 << " of " << step.n_stages
+            << (step.stage_name.empty() ? "" : " (" + step.stage_name + ")")
+            << ", step " << step.step_in_stage << " of "
+            << std::max(step.step_in_stage, step.n_steps_in_stage)
+            << ", pseudo-time " << IO::Console::format(step.state.time);
+      out << ": Newton iterations " << statistics.n_iterations
+          << ", active contact nodes " << problem.enforcement().n_active()
+          << std::endl;
+    }
+
+
+
+    template <int dim>
+    void
+    warn_if_search_edge_reached(IO::Console                     &console,
+                                const ContactNewtonProblem<dim> &problem)
+    {
+      if (problem.enforcement().touches_search_edge())
+        console.stream() << "  Warning: the contact zone reaches the edge of "
+                            "the search region; increase 'Search distance'."
+                         << std::endl;
+    }
+
+
+
+    template <int dim>
+    Solvers::LoadSteppingStatistics
+    run_load_steps(ContactNewtonProblem<dim>            &problem,
+                   const ExternalLoad                   &load,
+                   const Solvers::LoadProgramParameters &program,
+                   const IO::OutputParameters           &output,
+                   const DoFHandler<dim>                &dof_handler,
+                   const Mapping<dim>                   &mapping,
+                   IO::Console                          &console,
+                   const StepReport                     &report,
+                   IO::JsonObject                       &timings)
+    {
+      IO::SolutionOutput<dim> solution_output(output,
+                                              "solution",
+                                              dof_handler.get_communicator());
+      const auto solid_fields = problem.solid().output_postprocessors();
+      std::vector<const DataPostprocessor<dim> *> postprocessors;
+      for (const auto &p : solid_fields)
+        postprocessors.push_back(p.get());
+
+      Solvers::LoadStepCallbacks callbacks;
+      callbacks.solve = [&](const Solvers::LoadState &state) {
+        return problem.solve(state,
+                             load,
+                             console.stream(IO::Verbosity::verbose));
+      };
+      callbacks.accept = [&](const Solvers::StepInfo         &step,
+                             const Solvers::NewtonStatistics &statistics) {
+        problem.commit();
+        report(step, statistics);
+        if (output.write_graphical_output)
+          {
+            std::vector<IO::NodalScalarField> contact_fields;
+            for (auto &[name, values] :
+                 Contact::contact_nodal_fields(problem.coupling(),
+                                               problem.enforcement()))
+              contact_fields.push_back({name, std::move(values)});
+            solution_output.write(dof_handler,
+                                  mapping,
+                                  problem.displacement(),
+                                  postprocessors,
+                                  contact_fields,
+                                  step.state.time,
+                                  step.step);
+          }
+      };
+      callbacks.reject = [&]() {
+        problem.restore();
+      };
+
+      const auto start = std::chrono::steady_clock::now();
+      const auto stepping =
+        Solvers::run_load_program(program, callbacks, console);
+      const auto &times = problem.times();
+      timings.set("contact_setup_s", times.contact_setup)
+        .set("contact_solve_s", times.contact_setup + times.newton)
+        .set("contact_cpu_s", times.contact_cpu)
+        .set("load_stepping_s", IO::seconds_since(start))
+        .set("assembly_s", times.assembly)
+        .set("linear_solve_s", times.linear_solve)
+        .set("residual_s", times.residual)
+        .set("active_set_update_s", times.active_set_update);
+      return stepping;
+    }
+
+
+
+    template <int dim>
+    void
+    measure_contact_cost(ContactNewtonProblem<dim>  &problem,
+                         const ExternalLoad         &load,
+                         const Solvers::LoadState   &state,
+                         const ContactRunParameters &parameters,
+                         IO::Console                &console,
+                         IO::JsonObject             &timings)
+    {
+      if (!parameters.run_control.measure_contact_cost)
+        return;
+      const double contact = problem.times().contact_cpu;
+      const double fixed   = problem.time_fixed_active_set_solve(state, load);
+      timings.set("fixed_active_set_solve_s", fixed)
+        .set("contact_cost_ratio", contact / fixed);
+      console.stream() << "Cost of contact: " << std::fixed
+                       << std::setprecision(2) << contact / fixed
+                       << " times one assembly and solve with the active set "
+                          "held fixed (processor time)"
+                       << std::defaultfloat << std::setprecision(6)
+                       << std::endl;
+    }
+
+
+
+#define INSTANTIATE(dim)                                           \
+  template IO::JsonObject mesh_summary(                            \
+    const DoFHandler<dim> &,                                       \
+    const std::function<double(const Point<dim> &)> &);            \
+  template void print_setup(IO::Console &,                         \
+                            const DoFHandler<dim> &,               \
+                            const ContactNewtonProblem<dim> &);    \
+  template bool begin_run(IO::Console &,                           \
+                          const DoFHandler<dim> &,                 \
+                          const ContactNewtonProblem<dim> &,       \
+                          const ContactRunParameters &,            \
+                          const std::vector<std::string> &);       \
+  template void print_step(IO::Console &,                          \
+                           const Solvers::StepInfo &,              \
+                           const Solvers::NewtonStatistics &,      \
+                           const ContactNewtonProblem<dim> &);     \
+  template void warn_if_search_edge_reached(                       \
+    IO::Console &,                                                 \
+    const ContactNewtonProblem<dim> &);                            \
+  template Solvers::LoadSteppingStatistics run_load_steps(         \
+    ContactNewtonProblem<dim> &,                                   \
+    const ExternalLoad &,                                          \
+    const Solvers::LoadProgramParameters &,                        \
+    const IO::OutputParameters &,                                  \
+    const DoFHandler<dim> &,                                       \
+    const Mapping<dim> &,                                          \
+    IO::Console &,                                                 \
+    const StepReport &,                                            \
+    IO::JsonObject &);                                             \
+  template void measure_contact_cost(ContactNewtonProblem<dim> &,  \
+                                     const ExternalLoad &,         \
+                                     const Solvers::LoadState &,   \
+                                     const ContactRunParameters &, \
+                                     IO::Console &,                \
+                                     IO::JsonObject &);
+    INSTANTIATE(2)
+    INSTANTIATE(3)
+#undef INSTANTIATE
+  } // namespace Problems
+} // namespace Common
