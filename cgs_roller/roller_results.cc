@@ -58,7 +58,7 @@ namespace CgsRoller
       std::abs(std::abs(hertz.dundurs_beta()) - 1. / 7.) < 1e-6;
     const double a_ref = hertz.half_width();
     // Slip accumulated in contact for mu = 0.1 and beta = 1/7 (tabulated in
-    // REFERENCES.md 1.3, scaled to this load and radius).
+    // doc/references.md 1.3, scaled to this load and radius).
     const std::vector<std::pair<double, double>> spence_slip_table =
       has_slip_table ? Common::Analytic::spence_slip_table_mu01(
                          a_ref,
@@ -265,8 +265,8 @@ namespace CgsRoller
     if (std::isfinite(slip_reference))
       reference.set("slip_at_half_width_mm", slip_reference)
         .set("slip_source",
-             mu == 0. ? "closed form S0, REFERENCES.md sec. 1.3" :
-                        "Spence, tabulated in REFERENCES.md sec. 1.3");
+             mu == 0. ? "closed form S0, doc/references.md sec. 1.3" :
+                        "Spence, tabulated in doc/references.md sec. 1.3");
     if (friction)
       reference
         .set("friction_source",

@@ -20,7 +20,7 @@ namespace Punch3d
 {
   namespace
   {
-    /** MSC.Marc's u_z of the foundation top on the axis (REFERENCES.md 2.2,
+    /** MSC.Marc's u_z of the foundation top on the axis (doc/references.md 2.2,
      * mm), for mu = 0 and 0.1; NaN for other mu. */
     double
     marc_axis_displacement(const double mu)
@@ -374,16 +374,17 @@ namespace Punch3d
 
     JsonObject reference;
     reference
-      .set("source",
-           benchmark_geometry ?
-             "half-space solution of a rounded flat punch (REFERENCES.md "
-             "2.1); MSC.Marc/Abaqus curves of NAFEMS R0094 (REFERENCES.md "
-             "2.2)" :
-           sphere ?
-             "Hertz point contact: the half-space solution of REFERENCES.md "
-             "2.1 with flat radius b = 0" :
-             "half-space solution of a rounded flat punch (REFERENCES.md "
-             "2.1)")
+      .set(
+        "source",
+        benchmark_geometry ?
+          "half-space solution of a rounded flat punch (doc/references.md "
+          "2.1); MSC.Marc/Abaqus curves of NAFEMS R0094 (doc/references.md "
+          "2.2)" :
+        sphere ?
+          "Hertz point contact: the half-space solution of doc/references.md "
+          "2.1 with flat radius b = 0" :
+          "half-space solution of a rounded flat punch (doc/references.md "
+          "2.1)")
       .set("half_space_contact_radius_mm", half_space.contact_radius())
       .set("half_space_pressure_at_centre_MPa", half_space.pressure(0.));
     if (benchmark_geometry)
