@@ -14,9 +14,13 @@ Two loads are swept:
          half-space limit of the same model, where the comparison with
          Spence isolates the discretisation and the exact normal-tangential
          coupling (which Spence's Goodman approximation neglects).
-A run fails the sweep if it does not complete or has |c/a - Spence| >
-tolerance (default 0.05); load-step cutbacks are reported in the table. The script exits
-non-zero if any run fails.
+A run fails the sweep if it does not complete, or if it is a small-load run
+(where Spence's half-space solution holds) with |c/a - Spence| > tolerance
+(default 0.05). Full-load runs are shown beside Spence without a verdict
+("finite body": the cylinder is no half-space at a/R = 0.12), and so are
+the small-load runs of --quick ("quick mesh": its coarse contact mesh does
+not resolve c/a to the tolerance). Load-step cutbacks are reported in the
+table. The script exits non-zero if any run fails.
 
 The table also gives c/a of the same half-space problem without the
 Goodman approximation (boundary elements, summary.json
@@ -180,10 +184,15 @@ def main():
             print(f"{r['load']:6s} {r['mu']:<6g} run failed: {r['error']}")
             continue
         diff = r["c_over_a"] - r["c_over_a_spence"]
-        ok = abs(diff) <= args.tolerance
         r["difference"] = diff
-        r["verdict"] = "pass" if ok else "FAIL"
-        n_failed += not ok
+        if r["load"] != "small":
+            r["verdict"] = "finite body"
+        elif args.quick:
+            r["verdict"] = "quick mesh"
+        else:
+            ok = abs(diff) <= args.tolerance
+            r["verdict"] = "pass" if ok else "FAIL"
+            n_failed += not ok
         print(f"{r['load']:6s} {r['mu']:<6g} {r['n_dofs']:6d} {r['max_newton_per_step']:10d} "
               f"{r['n_cutbacks']:9d}  {r['c_over_a']:.4f}   {r['c_over_a_spence']:.4f}   "
               f"{diff:+.4f}  {r['c_over_a_coupled']:.4f}   {r['peak_q_over_spence']:.4f}   "
