@@ -1,3 +1,4 @@
+#include <common/contact/contact_assembly.h>
 #include <common/contact/contact_enforcement.h>
 #include <common/contact/coulomb_law.h>
 #include <common/contact/normal_contact_law.h>
@@ -15,111 +16,6 @@ namespace Common
   {
     using namespace dealii;
 
-    namespace
-    {
-      /**
-       * DoFs of secondary node j followed by the DoFs of its primary nodes,
-       * and the gradient B of \f$d\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$
-       * with respect to them: -D_j d on the secondary node, M_jk d on
-       * primary node k. With d = n_j this is the weighted gap.
-       */
-      template <int dim>
-      void
-      gap_gradient(const MortarCoupling<dim>            &coupling,
-                   const unsigned int                    j,
-                   const Tensor<1, dim>                 &direction,
-                   std::vector<types::global_dof_index> &dofs,
-                   Vector<double>                       &B)
-      {
-        const MortarRow<dim> &row  = coupling.row(j);
-        const auto &secondary_node = coupling.secondary_surface().node(j);
-        dofs.clear();
-        std::vector<double> values;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            dofs.push_back(secondary_node.dofs[c]);
-            values.push_back(-row.weight * direction[c]);
-          }
-        for (const auto &[k, M] : row.primary_weights)
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              dofs.push_back(coupling.primary_surface().node(k).dofs[c]);
-              values.push_back(M * direction[c]);
-            }
-        B.reinit(values.size());
-        for (unsigned int i = 0; i < values.size(); ++i)
-          B(i) = values[i];
-      }
-
-
-
-      /** Unit vector along coordinate direction d. */
-      template <int dim>
-      Tensor<1, dim>
-      unit_vector(const unsigned int d)
-      {
-        Tensor<1, dim> e;
-        e[d] = 1.;
-        return e;
-      }
-
-
-
-      /** An orthonormal basis of the plane (line in 2D) normal to the unit
-       * vector n; in 2D the tangent (n_1, -n_0). */
-      template <int dim>
-      std::vector<Tensor<1, dim>>
-      tangent_basis(const Tensor<1, dim> &n)
-      {
-        std::vector<Tensor<1, dim>> basis;
-        if constexpr (dim == 2)
-          basis.push_back(Tensor<1, dim>({n[1], -n[0]}));
-        else
-          {
-            // The coordinate direction least aligned with n, made
-            // orthogonal to it, and the cross product.
-            unsigned int d = 0;
-            for (unsigned int e = 1; e < dim; ++e)
-              if (std::abs(n[e]) < std::abs(n[d]))
-                d = e;
-            Tensor<1, dim> t1 = unit_vector<dim>(d);
-            t1 -= (t1 * n) * n;
-            t1 /= t1.norm();
-            basis.push_back(t1);
-            basis.push_back(cross_product_3d(n, t1));
-          }
-        return basis;
-      }
-
-
-
-      /** Tangential part \f$(I - n n^T)x\f$. */
-      template <int dim>
-      Tensor<1, dim>
-      tangential_part(const Tensor<1, dim> &x, const Tensor<1, dim> &n)
-      {
-        return x - (x * n) * n;
-      }
-    } // namespace
-
-
-
-    std::string
-    to_string(const PointStatus status)
-    {
-      switch (status)
-        {
-          case PointStatus::open:
-            return "open";
-          case PointStatus::stick:
-            return "stick";
-          default:
-            return "slip";
-        }
-    }
-
-
-
     template <int dim>
     ContactEnforcement<dim>::ContactEnforcement(
       const ContactParameters   &parameters,
@@ -128,24 +24,12 @@ namespace Common
       : parameters(parameters)
       , coupling(coupling)
       , reference_modulus(reference_modulus)
-      , slip_accumulated(coupling.n_rows())
+      , directions(nodal_normals(coupling))
+      , contact_state(directions)
       , cycling(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
-    {
-      const unsigned int n = coupling.n_rows();
-      state.status.assign(n, PointStatus::open);
-      state.slip_direction.assign(n, Tensor<1, dim>());
-      state.slip_turning_stiffness.assign(n, 0.);
-      state.pressures.assign(n, 0.);
-      state.tangential_tractions.assign(n, Tensor<1, dim>());
-      accepted_state = state;
-      accepted_relative_displacement.assign(n, Tensor<1, dim>());
-      free_tangents.resize(n);
-      for (unsigned int j = 0; j < n; ++j)
-        free_tangents[j] = tangent_basis(coupling.row(j).normal);
-      normally_free.assign(n, true);
-    }
+    {}
 
 
 
@@ -154,39 +38,8 @@ namespace Common
     ContactEnforcement<dim>::mark_constrained_nodes(
       const AffineConstraints<double> &constraints)
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const Tensor<1, dim> &normal = coupling.row(j).normal;
-          const auto &dofs = coupling.secondary_surface().node(j).dofs;
-          // The tangent directions w with w_d = 0 for every fixed d: the
-          // tangent plane minus the span of the fixed unit vectors'
-          // tangential parts (Gram-Schmidt).
-          std::vector<Tensor<1, dim>> fixed;
-          unsigned int                n_fixed = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            if (constraints.is_constrained(dofs[d]))
-              {
-                ++n_fixed;
-                Tensor<1, dim> w = unit_vector<dim>(d);
-                w                = tangential_part(w, normal);
-                for (const auto &q : fixed)
-                  w -= (w * q) * q;
-                if (w.norm() > 1e-8)
-                  fixed.push_back(w / w.norm());
-              }
-          std::vector<Tensor<1, dim>> free;
-          for (Tensor<1, dim> b : tangent_basis(normal))
-            {
-              for (const auto &q : fixed)
-                b -= (b * q) * q;
-              for (const auto &q : free)
-                b -= (b * q) * q;
-              if (b.norm() > 1e-8)
-                free.push_back(b / b.norm());
-            }
-          free_tangents[j] = free;
-          normally_free[j] = (n_fixed < dim);
-        }
+      directions.fix_constrained_components(coupling.secondary_surface(),
+                                            constraints);
     }
 
 
@@ -225,7 +78,9 @@ namespace Common
     void
     ContactEnforcement<dim>::initialize_active_set()
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+      const unsigned int       n = coupling.n_rows();
+      std::vector<PointStatus> status(n, PointStatus::open);
+      for (unsigned int j = 0; j < n; ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
           // The weighted gap averages over the node's support and is not
@@ -233,38 +88,28 @@ namespace Common
           const bool touching =
             row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
           // A touching node has no slip history: it starts in stick.
-          state.status[j] = (!touching      ? PointStatus::open :
-                             has_friction() ? PointStatus::stick :
-                                              PointStatus::slip);
+          status[j] = (!touching      ? PointStatus::open :
+                       has_friction() ? PointStatus::stick :
+                                        PointStatus::slip);
         }
       // Close the nearest node that carries a multiplier if no touching
       // one does (every rank holds every row, so all decide alike).
       unsigned int nearest = numbers::invalid_unsigned_int;
       bool         held    = false;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+      for (unsigned int j = 0; j < n; ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
           if (!row.has_partner || row.weight <= 0.)
             continue;
-          held = held || state.status[j] != PointStatus::open;
+          held = held || status[j] != PointStatus::open;
           if (nearest == numbers::invalid_unsigned_int ||
               row.nodal_gap < coupling.row(nearest).nodal_gap)
             nearest = j;
         }
       if (!held && nearest != numbers::invalid_unsigned_int)
-        state.status[nearest] =
+        status[nearest] =
           has_friction() ? PointStatus::stick : PointStatus::slip;
-      std::fill(state.pressures.begin(), state.pressures.end(), 0.);
-      std::fill(state.tangential_tractions.begin(),
-                state.tangential_tractions.end(),
-                Tensor<1, dim>());
-      accepted_state = state;
-      std::fill(accepted_relative_displacement.begin(),
-                accepted_relative_displacement.end(),
-                Tensor<1, dim>());
-      std::fill(slip_accumulated.begin(),
-                slip_accumulated.end(),
-                Tensor<1, dim>());
+      contact_state.reset(status);
     }
 
 
@@ -273,53 +118,7 @@ namespace Common
     void
     ContactEnforcement<dim>::commit(const VectorType &u)
     {
-      const auto        &surface = coupling.secondary_surface();
-      const unsigned int n       = coupling.n_rows();
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const Tensor<1, dim> relative = coupling.relative_displacement(j, u);
-          if (state.status[j] != PointStatus::open)
-            {
-              const Tensor<1, dim> increment =
-                free_tangential_part(j,
-                                     relative -
-                                       accepted_relative_displacement[j]);
-              double fraction = 1.;
-              if (accepted_state.status[j] == PointStatus::open)
-                {
-                  // Closed during the step: credit the part of the step
-                  // after the contact edge passed the node, with the edge
-                  // midway between the last closed and first open nodes at
-                  // the start (old) and end (new) of the step.
-                  const Point<dim> &x     = surface.node(j).position;
-                  double            d_old = std::numeric_limits<double>::max();
-                  double            d_new = d_old, spacing = d_old;
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      if (i == j || !coupling.row(i).has_partner)
-                        continue;
-                      const double d = x.distance(surface.node(i).position);
-                      spacing        = std::min(spacing, d);
-                      if (accepted_state.status[i] != PointStatus::open)
-                        d_old = std::min(d_old, d);
-                      if (state.status[i] == PointStatus::open)
-                        d_new = std::min(d_new, d);
-                    }
-                  if (d_old < std::numeric_limits<double>::max() &&
-                      d_new < std::numeric_limits<double>::max() &&
-                      d_old + d_new > spacing)
-                    fraction = std::clamp((d_new - 0.5 * spacing) /
-                                            (d_old + d_new - spacing),
-                                          0.,
-                                          1.);
-                  else
-                    fraction = 0.5;
-                }
-              slip_accumulated[j] += fraction * increment;
-            }
-          accepted_relative_displacement[j] = relative;
-        }
-      accepted_state = state;
+      contact_state.commit(node_kinematics(coupling, u));
     }
 
 
@@ -328,7 +127,7 @@ namespace Common
     void
     ContactEnforcement<dim>::restore()
     {
-      state = accepted_state;
+      contact_state.restore();
     }
 
 
@@ -337,8 +136,11 @@ namespace Common
     void
     ContactEnforcement<dim>::begin_step()
     {
+      std::vector<NodeState<dim>> nodes(coupling.n_rows());
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        nodes[j] = contact_state.node(j);
       history.clear();
-      history.push_back(codes(state));
+      history.push_back(codes(nodes));
       cycling                  = false;
       last_update_extrapolated = false;
       extrapolation_enabled    = parameters.accelerate_release;
@@ -353,62 +155,7 @@ namespace Common
       const AffineConstraints<double> &constraints,
       DynamicSparsityPattern          &dsp) const
     {
-      // Primary DoFs coupled to each DoF of a paired secondary node.
-      std::map<types::global_dof_index, std::vector<types::global_dof_index>>
-        partners;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner)
-            continue;
-          std::vector<types::global_dof_index> primary_dofs;
-          for (const auto &entry : row.primary_weights)
-            for (unsigned int e = 0; e < dim; ++e)
-              primary_dofs.push_back(
-                coupling.primary_surface().node(entry.first).dofs[e]);
-          for (unsigned int d = 0; d < dim; ++d)
-            partners[coupling.secondary_surface().node(j).dofs[d]] =
-              primary_dofs;
-        }
-
-      // Each cell's DoFs, closed under the constraints (hanging-node
-      // parents) and the contact partners, in any order of chaining: every
-      // coupling any active set can create lies in that closure.
-      std::vector<types::global_dof_index> cell_dofs(
-        dof_handler.get_fe().n_dofs_per_cell());
-      std::vector<types::global_dof_index> closure;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(cell_dofs);
-            closure.assign(cell_dofs.begin(), cell_dofs.end());
-            bool touches_contact = false;
-            for (unsigned int n = 0; n < closure.size(); ++n)
-              {
-                const types::global_dof_index i = closure[n];
-                if (const auto *entries = constraints.get_constraint_entries(i))
-                  for (const auto &entry : *entries)
-                    if (std::find(closure.begin(),
-                                  closure.end(),
-                                  entry.first) == closure.end())
-                      closure.push_back(entry.first);
-                const auto it = partners.find(i);
-                if (it != partners.end())
-                  {
-                    touches_contact = true;
-                    for (const auto k : it->second)
-                      if (std::find(closure.begin(), closure.end(), k) ==
-                          closure.end())
-                        closure.push_back(k);
-                  }
-              }
-            if (!touches_contact)
-              continue;
-            std::sort(closure.begin(), closure.end());
-            for (const auto i : closure)
-              if (dsp.row_index_set().is_element(i))
-                dsp.add_entries(i, closure.begin(), closure.end(), true);
-          }
+      add_contact_sparsity(coupling, dof_handler, constraints, dsp);
     }
 
 
@@ -421,7 +168,7 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
-          if (state.status[j] == PointStatus::open)
+          if (contact_state.node(j).status == PointStatus::open)
             continue;
           const MortarRow<dim> &row  = coupling.row(j);
           const auto           &node = coupling.secondary_surface().node(j);
@@ -434,11 +181,11 @@ namespace Common
           // after the increment the weighted gap vanishes and the relative
           // tangential displacement is that of the last accepted step.
           const Tensor<1, dim> target_defect =
-            state.status[j] == PointStatus::stick ?
+            contact_state.node(j).status == PointStatus::stick ?
               coupling.weighted_gap(j, u) / row.weight * row.normal +
                 slip_increment(j, u) :
               Tensor<1, dim>();
-          if (state.status[j] == PointStatus::stick && all_free)
+          if (contact_state.node(j).status == PointStatus::stick && all_free)
             {
               for (unsigned int d = 0; d < dim; ++d)
                 {
@@ -467,16 +214,17 @@ namespace Common
             (constraints.is_constrained(node.dofs[d]) ? fixed_components :
                                                         free_components)
               .push_back(d);
-          const unsigned int m = 1 + free_tangents[j].size();
-          if (state.status[j] == PointStatus::stick &&
-              !free_tangents[j].empty() && free_components.size() == m)
+          const unsigned int m = 1 + directions.free_tangents(j).size();
+          if (contact_state.node(j).status == PointStatus::stick &&
+              !directions.free_tangents(j).empty() &&
+              free_components.size() == m)
             {
               FullMatrix<double> A(m, dim), A_F(m, m), A_F_inverse(m, m);
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   A(0, d) = row.normal[d];
                   for (unsigned int i = 1; i < m; ++i)
-                    A(i, d) = free_tangents[j][i - 1][d];
+                    A(i, d) = directions.free_tangents(j)[i - 1][d];
                 }
               for (unsigned int i = 0; i < m; ++i)
                 for (unsigned int f = 0; f < m; ++f)
@@ -567,8 +315,8 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const auto &node = coupling.secondary_surface().node(j);
-          if (state.status[j] != PointStatus::slip ||
-              free_tangents[j].empty() ||
+          if (contact_state.node(j).status != PointStatus::slip ||
+              directions.free_tangents(j).empty() ||
               !locally_owned.is_element(node.dofs[0]))
             continue;
           const MortarRow<dim> &row = coupling.row(j);
@@ -595,7 +343,7 @@ namespace Common
 
           // Force -mu lambda B_e: D mu lambda e on the secondary node, its
           // reaction on the primary nodes. Tangent -(mu/D) B_e (n^T K_j).
-          const Tensor<1, dim> &e = state.slip_direction[j];
+          const Tensor<1, dim> &e = contact_state.node(j).slip_direction;
           gap_gradient(coupling, j, e, B_dofs, B);
           std::vector<types::global_dof_index> dofs = B_dofs;
           for (const auto &entry : stiffness_row)
@@ -621,7 +369,7 @@ namespace Common
           // tangent (k/D) B_t2 B_t2^T. (In 2D the tangent line holds e
           // alone.)
           if constexpr (dim == 3)
-            if (state.slip_turning_stiffness[j] > 0.)
+            if (contact_state.node(j).turning_stiffness > 0.)
               {
                 Tensor<1, dim> t2 = cross_product_3d(row.normal, e);
                 t2 /= t2.norm();
@@ -629,7 +377,7 @@ namespace Common
                 Vector<double>                       B_t2;
                 gap_gradient(coupling, j, t2, t2_dofs, B_t2);
                 Assert(t2_dofs == B_dofs, ExcInternalError());
-                const double k           = state.slip_turning_stiffness[j];
+                const double k = contact_state.node(j).turning_stiffness;
                 const double traction_t2 = k * (slip_increment(j, u) * t2);
                 for (unsigned int a = 0; a < B_t2.size(); ++a)
                   {
@@ -671,7 +419,7 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          if (state.status[j] == PointStatus::open ||
+          if (contact_state.node(j).status == PointStatus::open ||
               !locally_owned.is_element(
                 coupling.secondary_surface().node(j).dofs[0]))
             continue;
@@ -708,15 +456,15 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
-          const MortarRow<dim> &row     = coupling.row(j);
-          state.tangential_tractions[j] = Tensor<1, dim>();
-          if (state.status[j] == PointStatus::open)
+          const MortarRow<dim> &row                 = coupling.row(j);
+          contact_state.node(j).tangential_traction = Tensor<1, dim>();
+          if (contact_state.node(j).status == PointStatus::open)
             {
-              state.pressures[j] = 0.;
+              contact_state.node(j).pressure = 0.;
               continue;
             }
           if (parameters.enforcement == Enforcement::penalty)
-            state.pressures[j] =
+            contact_state.node(j).pressure =
               NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
                                                    row.weight,
                                                  parameters.penalty_stiffness);
@@ -727,10 +475,10 @@ namespace Common
               Tensor<1, dim> r;
               for (unsigned int c = 0; c < dim; ++c)
                 r[c] = bulk_residual(node.dofs[c]);
-              state.pressures[j] = (r * row.normal) / row.weight;
+              contact_state.node(j).pressure = (r * row.normal) / row.weight;
               if (has_friction())
-                state.tangential_tractions[j] =
-                  -free_tangential_part(j, r) / row.weight;
+                contact_state.node(j).tangential_traction =
+                  -directions.free_tangential_part(j, r) / row.weight;
             }
         }
     }
@@ -744,21 +492,11 @@ namespace Common
       const IndexSet                  &locally_owned,
       VectorType                      &residual) const
     {
-      std::vector<types::global_dof_index> dofs;
-      Vector<double>                       B;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          const Tensor<1, dim>  traction =
-            -state.pressures[j] * row.normal + state.tangential_tractions[j];
-          if (traction.norm() == 0. ||
-              !locally_owned.is_element(
-                coupling.secondary_surface().node(j).dofs[0]))
-            continue;
-          // B of d = -traction: D t on the secondary node, -M t on primary.
-          gap_gradient(coupling, j, -traction, dofs, B);
-          constraints.distribute_local_to_global(B, dofs, residual);
-        }
+      add_traction_forces(coupling,
+                          contact_state,
+                          constraints,
+                          locally_owned,
+                          residual);
     }
 
 
@@ -768,22 +506,8 @@ namespace Common
     ContactEnforcement<dim>::slip_increment(const unsigned int j,
                                             const VectorType  &u) const
     {
-      return free_tangential_part(j,
-                                  coupling.relative_displacement(j, u) -
-                                    accepted_relative_displacement[j]);
-    }
-
-
-
-    template <int dim>
-    Tensor<1, dim>
-    ContactEnforcement<dim>::free_tangential_part(const unsigned int    j,
-                                                  const Tensor<1, dim> &x) const
-    {
-      Tensor<1, dim> result;
-      for (const auto &b : free_tangents[j])
-        result += (x * b) * b;
-      return result;
+      return contact_state.slip_increment(j,
+                                          coupling.relative_displacement(j, u));
     }
 
 
@@ -797,18 +521,19 @@ namespace Common
       const double          gap = coupling.weighted_gap(j, u) / row.weight;
       const double          c   = ncp_constant(j);
       const double          C_n =
-        normally_free[j] ?
-                   NormalContactLaw::complementarity(state.pressures[j], gap, c) :
+        directions.normally_free(j) ?
+                   NormalContactLaw::complementarity(contact_state.node(j).pressure,
+                                            gap,
+                                            c) :
                    0.;
       Tensor<1, dim> C_t;
-      if (has_friction() && !free_tangents[j].empty())
-        C_t =
-          CoulombLaw::complementarity(state.tangential_tractions[j],
-                                      slip_increment(j, u),
-                                      parameters.friction_coefficient *
-                                        std::max(0.,
-                                                 state.pressures[j] - c * gap),
-                                      tangential_ncp_constant(j));
+      if (has_friction() && !directions.free_tangents(j).empty())
+        C_t = CoulombLaw::complementarity(
+          contact_state.node(j).tangential_traction,
+          slip_increment(j, u),
+          parameters.friction_coefficient *
+            std::max(0., contact_state.node(j).pressure - c * gap),
+          tangential_ncp_constant(j));
       return {C_n, C_t};
     }
 
@@ -827,19 +552,20 @@ namespace Common
 
     template <int dim>
     std::vector<int>
-    ContactEnforcement<dim>::codes(const State &s) const
+    ContactEnforcement<dim>::codes(
+      const std::vector<NodeState<dim>> &nodes) const
     {
-      std::vector<int> result(s.status.size());
-      for (unsigned int j = 0; j < s.status.size(); ++j)
+      std::vector<int> result(nodes.size());
+      for (unsigned int j = 0; j < nodes.size(); ++j)
         {
-          result[j] = static_cast<int>(s.status[j]);
+          const NodeState<dim> &s             = nodes[j];
+          const auto           &free_tangents = directions.free_tangents(j);
+          result[j]                           = static_cast<int>(s.status);
           // Along a single free tangent (2D, or a symmetry plane in 3D)
           // the slip direction is one of its two senses.
-          if (free_tangents[j].size() == 1 &&
-              s.status[j] == PointStatus::slip &&
-              s.slip_direction[j].norm() > 0.)
-            result[j] +=
-              (s.slip_direction[j] * free_tangents[j][0] < 0. ? 10 : 0);
+          if (free_tangents.size() == 1 && s.status == PointStatus::slip &&
+              s.slip_direction.norm() > 0.)
+            result[j] += (s.slip_direction * free_tangents[0] < 0. ? 10 : 0);
         }
       return result;
     }
@@ -856,17 +582,18 @@ namespace Common
       for (unsigned int j = 0; j < n; ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          closed[j]                 = (state.status[j] != PointStatus::open);
+          closed[j] = (contact_state.node(j).status != PointStatus::open);
           if (!row.has_partner)
             continue;
           const double gap = coupling.weighted_gap(j, u) / row.weight;
-          next[j]          = (parameters.enforcement == Enforcement::penalty ?
-                                NormalContactLaw::penalty_derivative(
-                         gap,
-                         parameters.penalty_stiffness) != 0. :
-                                NormalContactLaw::is_active(state.pressures[j],
-                                                   gap,
-                                                   ncp_constant(j)));
+          next[j] =
+            (parameters.enforcement == Enforcement::penalty ?
+               NormalContactLaw::penalty_derivative(
+                 gap,
+                 parameters.penalty_stiffness) != 0. :
+               NormalContactLaw::is_active(contact_state.node(j).pressure,
+                                           gap,
+                                           ncp_constant(j)));
           n_closed += (next[j] && !closed[j]);
           n_opened += (!next[j] && closed[j]);
         }
@@ -912,24 +639,27 @@ namespace Common
         }
 
       // Stick or slip for the closed nodes.
-      State proposed = state;
+      std::vector<NodeState<dim>> current(n);
+      for (unsigned int j = 0; j < n; ++j)
+        current[j] = contact_state.node(j);
+      std::vector<NodeState<dim>> proposed = current;
       for (unsigned int j = 0; j < n; ++j)
         {
-          proposed.slip_direction[j]         = Tensor<1, dim>();
-          proposed.slip_turning_stiffness[j] = 0.;
+          proposed[j].slip_direction    = Tensor<1, dim>();
+          proposed[j].turning_stiffness = 0.;
           if (!next[j])
             {
-              proposed.status[j] = PointStatus::open;
+              proposed[j].status = PointStatus::open;
               continue;
             }
           if (!has_friction())
             {
-              proposed.status[j] = PointStatus::slip;
+              proposed[j].status = PointStatus::slip;
               continue;
             }
-          if (free_tangents[j].empty())
+          if (directions.free_tangents(j).empty())
             {
-              proposed.status[j] = PointStatus::stick;
+              proposed[j].status = PointStatus::stick;
               continue;
             }
           const MortarRow<dim> &row = coupling.row(j);
@@ -937,30 +667,30 @@ namespace Common
           const double          bound =
             parameters.friction_coefficient *
             std::max(0.,
-                     state.pressures[j] -
+                     contact_state.node(j).pressure -
                        c * coupling.weighted_gap(j, u) / row.weight);
           const Tensor<1, dim> v   = slip_increment(j, u);
           const double         c_t = tangential_ncp_constant(j);
-          if (CoulombLaw::is_sticking(state.tangential_tractions[j],
+          if (CoulombLaw::is_sticking(contact_state.node(j).tangential_traction,
                                       v,
                                       bound,
                                       c_t))
-            proposed.status[j] = PointStatus::stick;
+            proposed[j].status = PointStatus::stick;
           else
             {
-              proposed.status[j] = PointStatus::slip;
-              const auto step =
-                CoulombLaw::slip_linearisation(state.tangential_tractions[j],
-                                               v,
-                                               bound,
-                                               c_t);
-              proposed.slip_direction[j] = step.direction;
+              proposed[j].status = PointStatus::slip;
+              const auto step    = CoulombLaw::slip_linearisation(
+                contact_state.node(j).tangential_traction,
+                v,
+                bound,
+                c_t);
+              proposed[j].slip_direction = step.direction;
               // Bounded, so that a point just past the stick limit does not
               // make the tangent ill-conditioned; the converged state does
               // not depend on k.
               // Only a node free to slip in the whole tangent plane turns.
-              if (free_tangents[j].size() == dim - 1)
-                proposed.slip_turning_stiffness[j] =
+              if (directions.free_tangents(j).size() == dim - 1)
+                proposed[j].turning_stiffness =
                   std::min(step.turning_stiffness, 1e3 * c_t);
             }
         }
@@ -970,7 +700,7 @@ namespace Common
       // edge, or a node at the stick-slip boundary). Then change only the
       // point with the largest complementarity violation whose change
       // leads to a set not seen yet.
-      const std::vector<int> current_codes = codes(state);
+      const std::vector<int> current_codes = codes(current);
       std::vector<int>       next_codes    = codes(proposed);
       const auto             seen = [this](const std::vector<int> &set) {
         return std::find(history.begin(), history.end(), set) != history.end();
@@ -991,14 +721,13 @@ namespace Common
               single[j]               = next_codes[j];
               if (!seen(single))
                 {
-                  State one             = state;
-                  one.status[j]         = proposed.status[j];
-                  one.slip_direction[j] = proposed.slip_direction[j];
-                  one.slip_turning_stiffness[j] =
-                    proposed.slip_turning_stiffness[j];
-                  proposed   = one;
-                  next_codes = single;
-                  cycling    = false;
+                  std::vector<NodeState<dim>> one = current;
+                  one[j].status                   = proposed[j].status;
+                  one[j].slip_direction           = proposed[j].slip_direction;
+                  one[j].turning_stiffness = proposed[j].turning_stiffness;
+                  proposed                 = one;
+                  next_codes               = single;
+                  cycling                  = false;
                   break;
                 }
             }
@@ -1008,9 +737,13 @@ namespace Common
       for (unsigned int j = 0; j < n; ++j)
         n_changed += (next_codes[j] != current_codes[j]);
       // In 3D a slip direction may turn without changing the code.
-      state.status                 = proposed.status;
-      state.slip_direction         = proposed.slip_direction;
-      state.slip_turning_stiffness = proposed.slip_turning_stiffness;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          NodeState<dim> &node   = contact_state.node(j);
+          node.status            = proposed[j].status;
+          node.slip_direction    = proposed[j].slip_direction;
+          node.turning_stiffness = proposed[j].turning_stiffness;
+        }
       history.push_back(next_codes);
       return n_changed;
     }
@@ -1050,7 +783,7 @@ namespace Common
     double
     ContactEnforcement<dim>::pressure(const unsigned int j) const
     {
-      return state.pressures[j];
+      return contact_state.node(j).pressure;
     }
 
 
@@ -1059,7 +792,7 @@ namespace Common
     bool
     ContactEnforcement<dim>::is_active(const unsigned int j) const
     {
-      return state.status[j] != PointStatus::open;
+      return contact_state.node(j).status != PointStatus::open;
     }
 
 
@@ -1068,7 +801,7 @@ namespace Common
     PointStatus
     ContactEnforcement<dim>::status(const unsigned int j) const
     {
-      return state.status[j];
+      return contact_state.node(j).status;
     }
 
 
@@ -1077,7 +810,7 @@ namespace Common
     const Tensor<1, dim> &
     ContactEnforcement<dim>::tangential_traction(const unsigned int j) const
     {
-      return state.tangential_tractions[j];
+      return contact_state.node(j).tangential_traction;
     }
 
 
@@ -1086,7 +819,7 @@ namespace Common
     const Tensor<1, dim> &
     ContactEnforcement<dim>::accumulated_slip(const unsigned int j) const
     {
-      return slip_accumulated[j];
+      return contact_state.accumulated_slip(j);
     }
 
 
@@ -1095,11 +828,7 @@ namespace Common
     unsigned int
     ContactEnforcement<dim>::n_active() const
     {
-      return std::count_if(state.status.begin(),
-                           state.status.end(),
-                           [](const PointStatus s) {
-                             return s != PointStatus::open;
-                           });
+      return contact_state.n_closed();
     }
 
 
@@ -1114,7 +843,8 @@ namespace Common
           bool any_active = false, any_unpaired = false;
           for (const unsigned int j : surface.face(f).nodes)
             {
-              any_active = any_active || state.status[j] != PointStatus::open;
+              any_active =
+                any_active || contact_state.node(j).status != PointStatus::open;
               // A node without measure (on the axis) bounds no search.
               any_unpaired = any_unpaired || (!coupling.row(j).has_partner &&
                                               coupling.row(j).weight > 0.);
@@ -1123,6 +853,13 @@ namespace Common
             return true;
         }
       return false;
+    }
+
+    template <int dim>
+    const ContactState<dim> &
+    ContactEnforcement<dim>::state() const
+    {
+      return contact_state;
     }
 
     template class ContactEnforcement<2>;

@@ -37,6 +37,8 @@
 #define common_contact_contact_enforcement_h
 
 #include <common/contact/contact_parameters.h>
+#include <common/contact/contact_state.h>
+#include <common/contact/free_directions.h>
 #include <common/contact/mortar_coupling.h>
 
 #include <deal.II/base/index_set.h>
@@ -54,22 +56,6 @@ namespace Common
 {
   namespace Contact
   {
-    /** State of a secondary node in the active set; the values are
-     * those of the "contact_status" output field. */
-    enum class PointStatus
-    {
-      /** Not in contact. */
-      open = 0,
-      /** In contact, no relative tangential motion in the step. */
-      stick = 1,
-      /** In contact and sliding (every closed node without friction). */
-      slip = 2
-    };
-
-    /** @brief "open", "stick" or "slip". */
-    std::string
-    to_string(const PointStatus status);
-
     /**
      * @brief Normal and frictional contact enforcement on the rows of a
      * MortarCoupling.
@@ -311,56 +297,34 @@ namespace Common
       double
       tangential_ncp_constant(const unsigned int j) const;
 
-    private:
-      /** State of all nodes that an accepted step must keep. */
-      struct State
-      {
-        std::vector<PointStatus>            status;
-        std::vector<dealii::Tensor<1, dim>> slip_direction;
-        /** Turning stiffness of a slipping node (MPa/mm,
-         * CoulombLaw::slip_linearisation()); 0 where the node does not
-         * slip. */
-        std::vector<double>                 slip_turning_stiffness;
-        std::vector<double>                 pressures;
-        std::vector<dealii::Tensor<1, dim>> tangential_tractions;
-      };
+      /** @brief The state of the nodes (ContactState). */
+      const ContactState<dim> &
+      state() const;
 
-      /** Active-set code of every node: status and, in 2D, the sense of
-       * the slip direction. Used to detect cycling. */
+    private:
+      /** Active-set code of every node: status and, along a single free
+       * tangent, the sense of the slip direction. Used to detect cycling. */
       std::vector<int>
-      codes(const State &state) const;
+      codes(const std::vector<NodeState<dim>> &nodes) const;
 
       /** Normal (MPa) and tangential (MPa) complementarity functions of
        * node j, in the current state. */
       std::pair<double, dealii::Tensor<1, dim>>
       complementarity(const unsigned int j, const VectorType &u) const;
 
-      /** Part of @p x along the free tangent directions of node j. */
-      dealii::Tensor<1, dim>
-      free_tangential_part(const unsigned int            j,
-                           const dealii::Tensor<1, dim> &x) const;
-
       /** Weighted violation of node j (N), to rank nodes when cycling. */
       double
       violation(const unsigned int j, const VectorType &u) const;
 
-      const ContactParameters             parameters;
-      const MortarCoupling<dim>          &coupling;
-      const double                        reference_modulus;
-      State                               state;
-      State                               accepted_state;
-      std::vector<dealii::Tensor<1, dim>> accepted_relative_displacement;
-      std::vector<dealii::Tensor<1, dim>> slip_accumulated;
-      std::vector<std::vector<int>>       history;
-      /** Orthonormal basis of the tangent directions along which each
-       * node may slip: the whole tangent plane (dim - 1 vectors) where no
-       * DoF is fixed, fewer where some are. */
-      std::vector<std::vector<dealii::Tensor<1, dim>>> free_tangents;
-      /** Nodes with at least one free DoF. */
-      std::vector<bool> normally_free;
-      bool              cycling;
-      bool              last_update_extrapolated;
-      bool              extrapolation_enabled;
+      const ContactParameters       parameters;
+      const MortarCoupling<dim>    &coupling;
+      const double                  reference_modulus;
+      FreeDirections<dim>           directions;
+      ContactState<dim>             contact_state;
+      std::vector<std::vector<int>> history;
+      bool                          cycling;
+      bool                          last_update_extrapolated;
+      bool                          extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common
