@@ -1,7 +1,6 @@
 #include <common/contact/contact_assembly.h>
 #include <common/contact/contact_enforcement.h>
 #include <common/contact/coulomb_law.h>
-#include <common/contact/normal_contact_law.h>
 
 #include <deal.II/lac/full_matrix.h>
 
@@ -26,6 +25,7 @@ namespace Common
       , reference_modulus(reference_modulus)
       , directions(nodal_normals(coupling))
       , contact_state(directions)
+      , normal(create_normal_enforcement<dim>(parameters))
       , cycling(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
@@ -166,131 +166,7 @@ namespace Common
       AffineConstraints<double> &constraints,
       const VectorType          &u) const
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          if (contact_state.node(j).status == PointStatus::open)
-            continue;
-          const MortarRow<dim> &row  = coupling.row(j);
-          const auto           &node = coupling.secondary_surface().node(j);
-
-          bool all_free = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            all_free = all_free && !constraints.is_constrained(node.dofs[d]);
-
-          // Stick: D du_j = sum_k M_jk du_k + g~ n + D P(w(u) - w_old):
-          // after the increment the weighted gap vanishes and the relative
-          // tangential displacement is that of the last accepted step.
-          const Tensor<1, dim> target_defect =
-            contact_state.node(j).status == PointStatus::stick ?
-              coupling.weighted_gap(j, u) / row.weight * row.normal +
-                slip_increment(j, u) :
-              Tensor<1, dim>();
-          if (contact_state.node(j).status == PointStatus::stick && all_free)
-            {
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  std::vector<std::pair<types::global_dof_index, double>>
-                    entries;
-                  for (const auto &[k, M] : row.primary_weights)
-                    if (std::abs(M) > 1e-14 * row.weight)
-                      entries.emplace_back(
-                        coupling.primary_surface().node(k).dofs[d],
-                        M / row.weight);
-                  constraints.add_line(node.dofs[d]);
-                  constraints.add_entries(node.dofs[d], entries);
-                  constraints.set_inhomogeneity(node.dofs[d], target_defect[d]);
-                }
-              continue;
-            }
-
-          // A stick node with some DoFs fixed (a symmetry plane): the
-          // normal condition and stick along the free tangents, A du_j =
-          // A (sum_k M_jk du_k / D + target_defect) with the rows of A the
-          // normal and the free tangents, solved for the free components F:
-          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target_defect) - A_X
-          // du_X).
-          std::vector<unsigned int> free_components, fixed_components;
-          for (unsigned int d = 0; d < dim; ++d)
-            (constraints.is_constrained(node.dofs[d]) ? fixed_components :
-                                                        free_components)
-              .push_back(d);
-          const unsigned int m = 1 + directions.free_tangents(j).size();
-          if (contact_state.node(j).status == PointStatus::stick &&
-              !directions.free_tangents(j).empty() &&
-              free_components.size() == m)
-            {
-              FullMatrix<double> A(m, dim), A_F(m, m), A_F_inverse(m, m);
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  A(0, d) = row.normal[d];
-                  for (unsigned int i = 1; i < m; ++i)
-                    A(i, d) = directions.free_tangents(j)[i - 1][d];
-                }
-              for (unsigned int i = 0; i < m; ++i)
-                for (unsigned int f = 0; f < m; ++f)
-                  A_F(i, f) = A(i, free_components[f]);
-              if (std::abs(A_F.determinant()) > 1e-6)
-                {
-                  A_F_inverse.invert(A_F);
-                  FullMatrix<double> S(m, dim); // A_F^-1 A
-                  A_F_inverse.mmult(S, A);
-                  for (unsigned int f = 0; f < m; ++f)
-                    {
-                      std::vector<std::pair<types::global_dof_index, double>>
-                             entries;
-                      double inhomogeneity = 0.;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        {
-                          inhomogeneity += S(f, d) * target_defect[d];
-                          if (std::abs(S(f, d)) < 1e-14)
-                            continue;
-                          for (const auto &[k, M] : row.primary_weights)
-                            if (std::abs(M) > 1e-14 * row.weight)
-                              entries.emplace_back(
-                                coupling.primary_surface().node(k).dofs[d],
-                                S(f, d) * M / row.weight);
-                        }
-                      for (const unsigned int x : fixed_components)
-                        if (std::abs(S(f, x)) > 1e-14)
-                          entries.emplace_back(node.dofs[x], -S(f, x));
-                      const auto dof = node.dofs[free_components[f]];
-                      constraints.add_line(dof);
-                      constraints.add_entries(dof, entries);
-                      constraints.set_inhomogeneity(dof, inhomogeneity);
-                    }
-                  continue;
-                }
-            }
-
-          // Normal condition only (slip, or a node without a free tangent
-          // direction): solve the linearised condition for the free
-          // component with the largest normal share.
-          int c = -1;
-          for (unsigned int d = 0; d < dim; ++d)
-            if (!constraints.is_constrained(node.dofs[d]) &&
-                (c < 0 || std::abs(row.normal[d]) > std::abs(row.normal[c])))
-              c = d;
-          if (c < 0 || std::abs(row.normal[c]) < 1e-6)
-            continue;
-
-          // n.(sum_k M_jk du_k - D du_j) = -g(u), solved for du_{j,c}.
-          const double scale = 1. / (row.weight * row.normal[c]);
-          std::vector<std::pair<types::global_dof_index, double>> entries;
-          for (unsigned int e = 0; e < dim; ++e)
-            if (e != static_cast<unsigned int>(c) &&
-                std::abs(row.normal[e]) > 1e-14)
-              entries.emplace_back(node.dofs[e],
-                                   -row.normal[e] / row.normal[c]);
-          for (const auto &[k, M] : row.primary_weights)
-            for (unsigned int e = 0; e < dim; ++e)
-              if (std::abs(M * row.normal[e]) > 1e-14 * row.weight)
-                entries.emplace_back(coupling.primary_surface().node(k).dofs[e],
-                                     M * row.normal[e] * scale);
-          constraints.add_line(node.dofs[c]);
-          constraints.add_entries(node.dofs[c], entries);
-          constraints.set_inhomogeneity(node.dofs[c],
-                                        coupling.weighted_gap(j, u) * scale);
-        }
+      normal->add_constraints(coupling, contact_state, u, constraints);
     }
 
 
@@ -412,39 +288,13 @@ namespace Common
       MatrixType                      &matrix,
       VectorType                      &residual) const
     {
-      std::vector<types::global_dof_index> dofs;
-      Vector<double>                       B;
-      FullMatrix<double>                   K;
-      Vector<double>                       r;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (contact_state.node(j).status == PointStatus::open ||
-              !locally_owned.is_element(
-                coupling.secondary_surface().node(j).dofs[0]))
-            continue;
-          // A closed node is a spring for the whole iteration, also where
-          // its gap has turned positive (a touching node's weighted gap is
-          // positive when the surfaces curve apart): without it the first
-          // iteration of a body held only by contact is singular. The
-          // active-set update then opens the node; at convergence the
-          // set agrees with the sign of the gap and p = k max(0, -g).
-          const double gap     = coupling.weighted_gap(j, u) / row.weight;
-          const double dp_dgap = -parameters.penalty_stiffness;
-          const double p       = dp_dgap * gap;
-
-          gap_gradient(coupling, j, row.normal, dofs, B);
-          K.reinit(dofs.size(), dofs.size());
-          r.reinit(dofs.size());
-          // Residual f_ext - f_int + p B; tangent -(dp/dg~) B B^T.
-          for (unsigned int a = 0; a < dofs.size(); ++a)
-            {
-              r(a) = p * B(a);
-              for (unsigned int b = 0; b < dofs.size(); ++b)
-                K(a, b) = -dp_dgap / row.weight * B(a) * B(b);
-            }
-          constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
-        }
+      normal->assemble(coupling,
+                       contact_state,
+                       constraints,
+                       u,
+                       locally_owned,
+                       matrix,
+                       residual);
     }
 
 
@@ -454,33 +304,11 @@ namespace Common
     ContactEnforcement<dim>::update_pressures(const VectorType &u,
                                               const VectorType &bulk_residual)
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row                 = coupling.row(j);
-          contact_state.node(j).tangential_traction = Tensor<1, dim>();
-          if (contact_state.node(j).status == PointStatus::open)
-            {
-              contact_state.node(j).pressure = 0.;
-              continue;
-            }
-          if (parameters.enforcement == Enforcement::penalty)
-            contact_state.node(j).pressure =
-              NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
-                                                   row.weight,
-                                                 parameters.penalty_stiffness);
-          else
-            {
-              // Equilibrium of node j: r_j + D_j(-lambda n + t) = 0.
-              const auto    &node = coupling.secondary_surface().node(j);
-              Tensor<1, dim> r;
-              for (unsigned int c = 0; c < dim; ++c)
-                r[c] = bulk_residual(node.dofs[c]);
-              contact_state.node(j).pressure = (r * row.normal) / row.weight;
-              if (has_friction())
-                contact_state.node(j).tangential_traction =
-                  -directions.free_tangential_part(j, r) / row.weight;
-            }
-        }
+      normal->update_tractions(coupling,
+                               u,
+                               bulk_residual,
+                               has_friction(),
+                               contact_state);
     }
 
 
@@ -522,9 +350,7 @@ namespace Common
       const double          c   = ncp_constant(j);
       const double          C_n =
         directions.normally_free(j) ?
-                   NormalContactLaw::complementarity(contact_state.node(j).pressure,
-                                            gap,
-                                            c) :
+                   normal->complementarity(contact_state.node(j).pressure, gap, c) :
                    0.;
       Tensor<1, dim> C_t;
       if (has_friction() && !directions.free_tangents(j).empty())
@@ -586,14 +412,9 @@ namespace Common
           if (!row.has_partner)
             continue;
           const double gap = coupling.weighted_gap(j, u) / row.weight;
-          next[j] =
-            (parameters.enforcement == Enforcement::penalty ?
-               NormalContactLaw::penalty_derivative(
-                 gap,
-                 parameters.penalty_stiffness) != 0. :
-               NormalContactLaw::is_active(contact_state.node(j).pressure,
-                                           gap,
-                                           ncp_constant(j)));
+          next[j]          = normal->is_closed(contact_state.node(j).pressure,
+                                      gap,
+                                      ncp_constant(j));
           n_closed += (next[j] && !closed[j]);
           n_opened += (!next[j] && closed[j]);
         }
@@ -763,7 +584,7 @@ namespace Common
     double
     ContactEnforcement<dim>::complementarity_norm(const VectorType &u) const
     {
-      if (parameters.enforcement == Enforcement::penalty)
+      if (!normal->has_multipliers())
         return 0.;
       double sum = 0.;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
@@ -860,6 +681,13 @@ namespace Common
     ContactEnforcement<dim>::state() const
     {
       return contact_state;
+    }
+
+    template <int dim>
+    const NormalEnforcement<dim> &
+    ContactEnforcement<dim>::normal_enforcement() const
+    {
+      return *normal;
     }
 
     template class ContactEnforcement<2>;

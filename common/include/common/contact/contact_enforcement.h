@@ -40,6 +40,7 @@
 #include <common/contact/contact_state.h>
 #include <common/contact/free_directions.h>
 #include <common/contact/mortar_coupling.h>
+#include <common/contact/normal_enforcement.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -48,7 +49,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <string>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -301,6 +302,10 @@ namespace Common
       const ContactState<dim> &
       state() const;
 
+      /** @brief The normal enforcement (NormalEnforcement). */
+      const NormalEnforcement<dim> &
+      normal_enforcement() const;
+
     private:
       /** Active-set code of every node: status and, along a single free
        * tangent, the sense of the slip direction. Used to detect cycling. */
@@ -316,15 +321,16 @@ namespace Common
       double
       violation(const unsigned int j, const VectorType &u) const;
 
-      const ContactParameters       parameters;
-      const MortarCoupling<dim>    &coupling;
-      const double                  reference_modulus;
-      FreeDirections<dim>           directions;
-      ContactState<dim>             contact_state;
-      std::vector<std::vector<int>> history;
-      bool                          cycling;
-      bool                          last_update_extrapolated;
-      bool                          extrapolation_enabled;
+      const ContactParameters                       parameters;
+      const MortarCoupling<dim>                    &coupling;
+      const double                                  reference_modulus;
+      FreeDirections<dim>                           directions;
+      ContactState<dim>                             contact_state;
+      const std::unique_ptr<NormalEnforcement<dim>> normal;
+      std::vector<std::vector<int>>                 history;
+      bool                                          cycling;
+      bool                                          last_update_extrapolated;
+      bool                                          extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common
