@@ -1,8 +1,5 @@
 #include <common/contact/contact_assembly.h>
 #include <common/contact/contact_enforcement.h>
-#include <common/contact/coulomb_law.h>
-
-#include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
 #include <limits>
@@ -26,6 +23,7 @@ namespace Common
       , directions(nodal_normals(coupling))
       , contact_state(directions)
       , normal(create_normal_enforcement<dim>(parameters))
+      , friction(create_friction_model<dim>(parameters))
       , cycling(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
@@ -48,8 +46,7 @@ namespace Common
     bool
     ContactEnforcement<dim>::has_friction() const
     {
-      return parameters.friction_law == FrictionLaw::coulomb &&
-             parameters.friction_coefficient > 0.;
+      return friction->has_friction();
     }
 
 
@@ -87,10 +84,8 @@ namespace Common
           // zero at a touching node; the pointwise gap is, up to round-off.
           const bool touching =
             row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
-          // A touching node has no slip history: it starts in stick.
-          status[j] = (!touching      ? PointStatus::open :
-                       has_friction() ? PointStatus::stick :
-                                        PointStatus::slip);
+          status[j] =
+            touching ? friction->status_on_contact() : PointStatus::open;
         }
       // Close the nearest node that carries a multiplier if no touching
       // one does (every rank holds every row, so all decide alike).
@@ -107,8 +102,7 @@ namespace Common
             nearest = j;
         }
       if (!held && nearest != numbers::invalid_unsigned_int)
-        status[nearest] =
-          has_friction() ? PointStatus::stick : PointStatus::slip;
+        status[nearest] = friction->status_on_contact();
       contact_state.reset(status);
     }
 
@@ -182,99 +176,15 @@ namespace Common
       MatrixType                      &matrix,
       VectorType                      &residual) const
     {
-      if (!has_friction())
-        return;
-      const double                         mu = parameters.friction_coefficient;
-      std::vector<types::global_dof_index> B_dofs;
-      Vector<double>                       B;
-      std::map<types::global_dof_index, double> stiffness_row;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const auto &node = coupling.secondary_surface().node(j);
-          if (contact_state.node(j).status != PointStatus::slip ||
-              directions.free_tangents(j).empty() ||
-              !locally_owned.is_element(node.dofs[0]))
-            continue;
-          const MortarRow<dim> &row = coupling.row(j);
-
-          // lambda_j(u) = n.r_j(u)/D_j and its gradient -n^T K_j / D_j.
-          double rn = 0.;
-          stiffness_row.clear();
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              Assert(locally_owned.is_element(node.dofs[c]),
-                     ExcInternalError());
-              rn += bulk_residual(node.dofs[c]) * row.normal[c];
-              if (row.normal[c] == 0.)
-                continue;
-              // end() once: a Trilinos row iterator copies its row when
-              // it is made.
-              const auto end = bulk_matrix.end(node.dofs[c]);
-              for (auto entry = bulk_matrix.begin(node.dofs[c]); entry != end;
-                   ++entry)
-                stiffness_row[entry->column()] +=
-                  row.normal[c] * entry->value();
-            }
-          const double pressure = rn / row.weight;
-
-          // Force -mu lambda B_e: D mu lambda e on the secondary node, its
-          // reaction on the primary nodes. Tangent -(mu/D) B_e (n^T K_j).
-          const Tensor<1, dim> &e = contact_state.node(j).slip_direction;
-          gap_gradient(coupling, j, e, B_dofs, B);
-          std::vector<types::global_dof_index> dofs = B_dofs;
-          for (const auto &entry : stiffness_row)
-            if (std::find(B_dofs.begin(), B_dofs.end(), entry.first) ==
-                B_dofs.end())
-              dofs.push_back(entry.first);
-          // Only the rows of B's DoFs are non-zero: a rectangular block.
-          FullMatrix<double> K(B_dofs.size(), dofs.size());
-          Vector<double>     r(B_dofs.size());
-          for (unsigned int a = 0; a < B_dofs.size(); ++a)
-            {
-              r(a) = -mu * pressure * B(a);
-              for (unsigned int b = 0; b < dofs.size(); ++b)
-                {
-                  const auto it = stiffness_row.find(dofs[b]);
-                  if (it != stiffness_row.end())
-                    K(a, b) = -mu / row.weight * B(a) * it->second;
-                }
-            }
-          // In 3D the traction turns: across e, along t2 = n x e, the
-          // traction of the next iterate is k v.t2 (slip_linearisation()),
-          // a force -k (v.t2) B_t2 with v.t2 = B_t2 . u / D + const and
-          // tangent (k/D) B_t2 B_t2^T. (In 2D the tangent line holds e
-          // alone.)
-          if constexpr (dim == 3)
-            if (contact_state.node(j).turning_stiffness > 0.)
-              {
-                Tensor<1, dim> t2 = cross_product_3d(row.normal, e);
-                t2 /= t2.norm();
-                std::vector<types::global_dof_index> t2_dofs;
-                Vector<double>                       B_t2;
-                gap_gradient(coupling, j, t2, t2_dofs, B_t2);
-                Assert(t2_dofs == B_dofs, ExcInternalError());
-                const double k = contact_state.node(j).turning_stiffness;
-                const double traction_t2 = k * (slip_increment(j, u) * t2);
-                for (unsigned int a = 0; a < B_t2.size(); ++a)
-                  {
-                    r(a) -= traction_t2 * B_t2(a);
-                    for (unsigned int b = 0; b < B_t2.size(); ++b)
-                      K(a, b) += k / row.weight * B_t2(a) * B_t2(b);
-                  }
-              }
-          // As the square distribute_local_to_global() with matrix and
-          // vector: the inhomogeneities of constrained columns move to the
-          // right-hand side, then rows and columns are condensed.
-          for (unsigned int b = 0; b < dofs.size(); ++b)
-            if (constraints.is_inhomogeneously_constrained(dofs[b]))
-              {
-                const double g = constraints.get_inhomogeneity(dofs[b]);
-                for (unsigned int a = 0; a < B_dofs.size(); ++a)
-                  r(a) -= K(a, b) * g;
-              }
-          constraints.distribute_local_to_global(K, B_dofs, dofs, matrix);
-          constraints.distribute_local_to_global(r, B_dofs, residual);
-        }
+      friction->assemble(coupling,
+                         contact_state,
+                         constraints,
+                         u,
+                         bulk_matrix,
+                         bulk_residual,
+                         locally_owned,
+                         matrix,
+                         residual);
     }
 
 
@@ -352,15 +262,14 @@ namespace Common
         directions.normally_free(j) ?
                    normal->complementarity(contact_state.node(j).pressure, gap, c) :
                    0.;
-      Tensor<1, dim> C_t;
-      if (has_friction() && !directions.free_tangents(j).empty())
-        C_t = CoulombLaw::complementarity(
-          contact_state.node(j).tangential_traction,
-          slip_increment(j, u),
-          parameters.friction_coefficient *
-            std::max(0., contact_state.node(j).pressure - c * gap),
-          tangential_ncp_constant(j));
-      return {C_n, C_t};
+      FrictionPoint<dim> point;
+      point.traction       = contact_state.node(j).tangential_traction;
+      point.slip_increment = slip_increment(j, u);
+      point.normal_pressure =
+        std::max(0., contact_state.node(j).pressure - c * gap);
+      point.c               = tangential_ncp_constant(j);
+      point.n_free_tangents = directions.free_tangents(j).size();
+      return {C_n, friction->complementarity(point)};
     }
 
 
@@ -473,47 +382,21 @@ namespace Common
               proposed[j].status = PointStatus::open;
               continue;
             }
-          if (!has_friction())
-            {
-              proposed[j].status = PointStatus::slip;
-              continue;
-            }
-          if (directions.free_tangents(j).empty())
-            {
-              proposed[j].status = PointStatus::stick;
-              continue;
-            }
           const MortarRow<dim> &row = coupling.row(j);
           const double          c   = ncp_constant(j);
-          const double          bound =
-            parameters.friction_coefficient *
+          FrictionPoint<dim>    point;
+          point.traction       = contact_state.node(j).tangential_traction;
+          point.slip_increment = slip_increment(j, u);
+          point.normal_pressure =
             std::max(0.,
                      contact_state.node(j).pressure -
                        c * coupling.weighted_gap(j, u) / row.weight);
-          const Tensor<1, dim> v   = slip_increment(j, u);
-          const double         c_t = tangential_ncp_constant(j);
-          if (CoulombLaw::is_sticking(contact_state.node(j).tangential_traction,
-                                      v,
-                                      bound,
-                                      c_t))
-            proposed[j].status = PointStatus::stick;
-          else
-            {
-              proposed[j].status = PointStatus::slip;
-              const auto step    = CoulombLaw::slip_linearisation(
-                contact_state.node(j).tangential_traction,
-                v,
-                bound,
-                c_t);
-              proposed[j].slip_direction = step.direction;
-              // Bounded, so that a point just past the stick limit does not
-              // make the tangent ill-conditioned; the converged state does
-              // not depend on k.
-              // Only a node free to slip in the whole tangent plane turns.
-              if (directions.free_tangents(j).size() == dim - 1)
-                proposed[j].turning_stiffness =
-                  std::min(step.turning_stiffness, 1e3 * c_t);
-            }
+          point.c               = tangential_ncp_constant(j);
+          point.n_free_tangents = directions.free_tangents(j).size();
+          const FrictionStatus<dim> tangential = friction->closed_status(point);
+          proposed[j].status                   = tangential.status;
+          proposed[j].slip_direction           = tangential.slip_direction;
+          proposed[j].turning_stiffness        = tangential.turning_stiffness;
         }
 
       // A set seen before in this step means ping-pong (typically a corner
@@ -688,6 +571,13 @@ namespace Common
     ContactEnforcement<dim>::normal_enforcement() const
     {
       return *normal;
+    }
+
+    template <int dim>
+    const FrictionModel<dim> &
+    ContactEnforcement<dim>::friction_model() const
+    {
+      return *friction;
     }
 
     template class ContactEnforcement<2>;

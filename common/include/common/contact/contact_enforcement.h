@@ -39,6 +39,7 @@
 #include <common/contact/contact_parameters.h>
 #include <common/contact/contact_state.h>
 #include <common/contact/free_directions.h>
+#include <common/contact/friction_model.h>
 #include <common/contact/mortar_coupling.h>
 #include <common/contact/normal_enforcement.h>
 
@@ -306,6 +307,10 @@ namespace Common
       const NormalEnforcement<dim> &
       normal_enforcement() const;
 
+      /** @brief The friction model (FrictionModel). */
+      const FrictionModel<dim> &
+      friction_model() const;
+
     private:
       /** Active-set code of every node: status and, along a single free
        * tangent, the sense of the slip direction. Used to detect cycling. */
@@ -327,6 +332,7 @@ namespace Common
       FreeDirections<dim>                           directions;
       ContactState<dim>                             contact_state;
       const std::unique_ptr<NormalEnforcement<dim>> normal;
+      const std::unique_ptr<FrictionModel<dim>>     friction;
       std::vector<std::vector<int>>                 history;
       bool                                          cycling;
       bool                                          last_update_extrapolated;
