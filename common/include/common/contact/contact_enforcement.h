@@ -1,10 +1,20 @@
 /**
  * @file contact_enforcement.h
- * Enforcement of the normal contact condition on the mortar rows of a
- * contact pair: the active set of the semismooth Newton method, its
- * condensation into affine constraints (dual Lagrange multipliers), the
- * penalty alternative, Coulomb friction, and the recovery of the nodal
- * tractions.
+ * Normal and frictional contact on the mortar rows of a contact pair, as
+ * one object: a facade that composes the parts, each in its own file, and
+ * only delegates to them:
+ * - FreeDirections (free_directions.h): the directions in which each
+ *   secondary node may move;
+ * - ContactState (contact_state.h): status, pressure, tangential traction,
+ *   slip direction and turning stiffness of every node, and the friction
+ *   history of the accepted load steps;
+ * - NormalEnforcement (normal_enforcement.h): condensed dual Lagrange
+ *   multipliers or penalty;
+ * - FrictionModel (friction_model.h): frictionless or Coulomb;
+ * - ActiveSetPolicy (active_set_policy.h): the semismooth Newton
+ *   active-set rule with its safeguards;
+ * - contact_assembly.h: gathering nodal kinematics and scattering contact
+ *   terms.
  *
  * With dual multipliers D is diagonal, so an active node's constraint
  * \f$\tilde g_j(u) = 0\f$ can be solved for one displacement component of
@@ -36,6 +46,7 @@
 #ifndef common_contact_contact_enforcement_h
 #define common_contact_contact_enforcement_h
 
+#include <common/contact/active_set_policy.h>
 #include <common/contact/contact_parameters.h>
 #include <common/contact/contact_state.h>
 #include <common/contact/free_directions.h>
@@ -51,8 +62,6 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
-#include <utility>
-#include <vector>
 
 namespace Common
 {
@@ -148,7 +157,8 @@ namespace Common
        * @brief Lagrange multipliers: add one constraint per active node on
        * the Newton increment, such that the weighted gap of the updated
        * displacement vanishes. @p constraints must already hold the
-       * Dirichlet constraints (it is not closed here).
+       * Dirichlet constraints (it is not closed here). Nothing with a
+       * penalty (NormalEnforcement::add_constraints()).
        * @param[in] u Current displacement (ghosted).
        */
       void
@@ -162,7 +172,8 @@ namespace Common
        * its linearisation, which couples the node's bulk stiffness row into
        * its primary partners' rows (CoulombLaw::slip_linearisation(); the
        * second term exists in 3D only and vanishes at convergence). Matrix
-       * and vector are not compressed here.
+       * and vector are not compressed here. Nothing without friction
+       * (FrictionModel::assemble()).
        * @param[in] u Current displacement (ghosted).
        * @param[in] bulk_matrix Tangent of the bulk residual, condensed with
        * the Dirichlet and hanging-node constraints only; supplies the rows
@@ -186,7 +197,8 @@ namespace Common
       /**
        * @brief Penalty: add tangent and residual of the penalty terms for
        * the nodes whose first DoF is in @p locally_owned. Matrix and vector
-       * are not compressed here.
+       * are not compressed here. Nothing with Lagrange multipliers
+       * (NormalEnforcement::assemble()).
        */
       void
       assemble_penalty(const dealii::AffineConstraints<double> &constraints,
@@ -311,32 +323,17 @@ namespace Common
       const FrictionModel<dim> &
       friction_model() const;
 
+      /** @brief The active-set policy (ActiveSetPolicy). */
+      const ActiveSetPolicy<dim> &
+      active_set_policy() const;
+
     private:
-      /** Active-set code of every node: status and, along a single free
-       * tangent, the sense of the slip direction. Used to detect cycling. */
-      std::vector<int>
-      codes(const std::vector<NodeState<dim>> &nodes) const;
-
-      /** Normal (MPa) and tangential (MPa) complementarity functions of
-       * node j, in the current state. */
-      std::pair<double, dealii::Tensor<1, dim>>
-      complementarity(const unsigned int j, const VectorType &u) const;
-
-      /** Weighted violation of node j (N), to rank nodes when cycling. */
-      double
-      violation(const unsigned int j, const VectorType &u) const;
-
-      const ContactParameters                       parameters;
       const MortarCoupling<dim>                    &coupling;
-      const double                                  reference_modulus;
       FreeDirections<dim>                           directions;
       ContactState<dim>                             contact_state;
       const std::unique_ptr<NormalEnforcement<dim>> normal;
       const std::unique_ptr<FrictionModel<dim>>     friction;
-      std::vector<std::vector<int>>                 history;
-      bool                                          cycling;
-      bool                                          last_update_extrapolated;
-      bool                                          extrapolation_enabled;
+      ActiveSetPolicy<dim>                          policy;
     };
   } // namespace Contact
 } // namespace Common
