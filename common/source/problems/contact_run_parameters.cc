@@ -30,8 +30,13 @@ namespace Common
       load_stepping.parse_parameters(prm);
       output.parse_parameters(prm);
       run_control.parse_parameters(prm);
+      // Only friction that acts (Coulomb with mu > 0) makes the system
+      // non-symmetric; 'coulomb' with mu = 0 is frictionless.
+      const bool with_friction =
+        contact.friction_law == Contact::FrictionLaw::coulomb &&
+        contact.friction_coefficient > 0.;
       AssertThrow(!(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
-                    contact.friction_law != Contact::FrictionLaw::frictionless),
+                    with_friction),
                   ExcMessage(
                     "Linear solver 'cg amg' needs a symmetric system, which "
                     "friction does not give; use 'gmres amg' or a direct "
