@@ -1,13 +1,5 @@
+#include <common/contact/contact_assembly.h>
 #include <common/contact/contact_enforcement.h>
-#include <common/contact/coulomb_law.h>
-#include <common/contact/normal_contact_law.h>
-
-#include <deal.II/lac/full_matrix.h>
-
-#include <algorithm>
-#include <limits>
-#include <map>
-#include <tuple>
 
 namespace Common
 {
@@ -15,136 +7,29 @@ namespace Common
   {
     using namespace dealii;
 
-    namespace
-    {
-      /**
-       * DoFs of secondary node j followed by the DoFs of its primary nodes,
-       * and the gradient B of \f$d\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$
-       * with respect to them: -D_j d on the secondary node, M_jk d on
-       * primary node k. With d = n_j this is the weighted gap.
-       */
-      template <int dim>
-      void
-      gap_gradient(const MortarCoupling<dim>            &coupling,
-                   const unsigned int                    j,
-                   const Tensor<1, dim>                 &direction,
-                   std::vector<types::global_dof_index> &dofs,
-                   Vector<double>                       &B)
-      {
-        const MortarRow<dim> &row  = coupling.row(j);
-        const auto &secondary_node = coupling.secondary_surface().node(j);
-        dofs.clear();
-        std::vector<double> values;
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            dofs.push_back(secondary_node.dofs[c]);
-            values.push_back(-row.weight * direction[c]);
-          }
-        for (const auto &[k, M] : row.primary_weights)
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              dofs.push_back(coupling.primary_node(k).dofs[c]);
-              values.push_back(M * direction[c]);
-            }
-        B.reinit(values.size());
-        for (unsigned int i = 0; i < values.size(); ++i)
-          B(i) = values[i];
-      }
-
-
-
-      /** Unit vector along coordinate direction d. */
-      template <int dim>
-      Tensor<1, dim>
-      unit_vector(const unsigned int d)
-      {
-        Tensor<1, dim> e;
-        e[d] = 1.;
-        return e;
-      }
-
-
-
-      /** An orthonormal basis of the plane (line in 2D) normal to the unit
-       * vector n; in 2D the tangent (n_1, -n_0). */
-      template <int dim>
-      std::vector<Tensor<1, dim>>
-      tangent_basis(const Tensor<1, dim> &n)
-      {
-        std::vector<Tensor<1, dim>> basis;
-        if constexpr (dim == 2)
-          basis.push_back(Tensor<1, dim>({n[1], -n[0]}));
-        else
-          {
-            // The coordinate direction least aligned with n, made
-            // orthogonal to it, and the cross product.
-            unsigned int d = 0;
-            for (unsigned int e = 1; e < dim; ++e)
-              if (std::abs(n[e]) < std::abs(n[d]))
-                d = e;
-            Tensor<1, dim> t1 = unit_vector<dim>(d);
-            t1 -= (t1 * n) * n;
-            t1 /= t1.norm();
-            basis.push_back(t1);
-            basis.push_back(cross_product_3d(n, t1));
-          }
-        return basis;
-      }
-
-
-
-      /** Tangential part \f$(I - n n^T)x\f$. */
-      template <int dim>
-      Tensor<1, dim>
-      tangential_part(const Tensor<1, dim> &x, const Tensor<1, dim> &n)
-      {
-        return x - (x * n) * n;
-      }
-    } // namespace
-
-
-
-    std::string
-    to_string(const PointStatus status)
-    {
-      switch (status)
-        {
-          case PointStatus::open:
-            return "open";
-          case PointStatus::stick:
-            return "stick";
-          default:
-            return "slip";
-        }
-    }
-
-
+    // Every member function delegates to one of the parts; the algorithms
+    // live in the parts' files.
 
     template <int dim>
     ContactEnforcement<dim>::ContactEnforcement(
       const ContactParameters   &parameters,
       const MortarCoupling<dim> &coupling,
       const double               reference_modulus)
-      : parameters(parameters)
-      , coupling(coupling)
-      , reference_modulus(reference_modulus)
-      , slip_accumulated(coupling.n_rows())
-      , cycling(false)
-      , last_update_extrapolated(false)
-      , extrapolation_enabled(parameters.accelerate_release)
+      : coupling(coupling)
+      , directions(nodal_normals(coupling))
+      , contact_state(directions)
+      , normal(create_normal_enforcement<dim>(parameters))
+      , friction(create_friction_model<dim>(parameters))
+      , policy(parameters, reference_modulus)
+    {}
+
+
+
+    template <int dim>
+    void
+    ContactEnforcement<dim>::initialize_active_set()
     {
-      const unsigned int n = coupling.n_rows();
-      state.status.assign(n, PointStatus::open);
-      state.slip_direction.assign(n, Tensor<1, dim>());
-      state.slip_turning_stiffness.assign(n, 0.);
-      state.pressures.assign(n, 0.);
-      state.tangential_tractions.assign(n, Tensor<1, dim>());
-      accepted_state = state;
-      accepted_relative_displacement.assign(n, Tensor<1, dim>());
-      free_tangents.resize(n);
-      for (unsigned int j = 0; j < n; ++j)
-        free_tangents[j] = tangent_basis(coupling.row(j).normal);
-      normally_free.assign(n, true);
+      policy.initialize(node_kinematics(coupling), *friction, contact_state);
     }
 
 
@@ -154,117 +39,8 @@ namespace Common
     ContactEnforcement<dim>::mark_constrained_nodes(
       const AffineConstraints<double> &constraints)
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const Tensor<1, dim> &normal = coupling.row(j).normal;
-          const auto &dofs = coupling.secondary_surface().node(j).dofs;
-          // The tangent directions w with w_d = 0 for every fixed d: the
-          // tangent plane minus the span of the fixed unit vectors'
-          // tangential parts (Gram-Schmidt).
-          std::vector<Tensor<1, dim>> fixed;
-          unsigned int                n_fixed = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            if (constraints.is_constrained(dofs[d]))
-              {
-                ++n_fixed;
-                Tensor<1, dim> w = unit_vector<dim>(d);
-                w                = tangential_part(w, normal);
-                for (const auto &q : fixed)
-                  w -= (w * q) * q;
-                if (w.norm() > 1e-8)
-                  fixed.push_back(w / w.norm());
-              }
-          std::vector<Tensor<1, dim>> free;
-          for (Tensor<1, dim> b : tangent_basis(normal))
-            {
-              for (const auto &q : fixed)
-                b -= (b * q) * q;
-              for (const auto &q : free)
-                b -= (b * q) * q;
-              if (b.norm() > 1e-8)
-                free.push_back(b / b.norm());
-            }
-          free_tangents[j] = free;
-          normally_free[j] = (n_fixed < dim);
-        }
-    }
-
-
-
-    template <int dim>
-    bool
-    ContactEnforcement<dim>::has_friction() const
-    {
-      return parameters.friction_law == FrictionLaw::coulomb &&
-             parameters.friction_coefficient > 0.;
-    }
-
-
-
-    template <int dim>
-    double
-    ContactEnforcement<dim>::ncp_constant(const unsigned int j) const
-    {
-      return parameters.ncp_factor * reference_modulus /
-             coupling.row(j).mesh_size;
-    }
-
-
-
-    template <int dim>
-    double
-    ContactEnforcement<dim>::tangential_ncp_constant(const unsigned int j) const
-    {
-      return parameters.tangential_ncp_factor * reference_modulus /
-             coupling.row(j).mesh_size;
-    }
-
-
-
-    template <int dim>
-    void
-    ContactEnforcement<dim>::initialize_active_set()
-    {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          // The weighted gap averages over the node's support and is not
-          // zero at a touching node; the pointwise gap is, up to round-off.
-          const bool touching =
-            row.has_partner && row.nodal_gap <= 1e-8 * row.mesh_size;
-          // A touching node has no slip history: it starts in stick.
-          state.status[j] = (!touching      ? PointStatus::open :
-                             has_friction() ? PointStatus::stick :
-                                              PointStatus::slip);
-        }
-      // Close the nearest node that carries a multiplier if no touching
-      // one does (every rank holds every row, so all decide alike).
-      unsigned int nearest = numbers::invalid_unsigned_int;
-      bool         held    = false;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner || row.weight <= 0.)
-            continue;
-          held = held || state.status[j] != PointStatus::open;
-          if (nearest == numbers::invalid_unsigned_int ||
-              row.nodal_gap < coupling.row(nearest).nodal_gap)
-            nearest = j;
-        }
-      if (!held && nearest != numbers::invalid_unsigned_int)
-        state.status[nearest] =
-          has_friction() ? PointStatus::stick : PointStatus::slip;
-      std::fill(state.pressures.begin(), state.pressures.end(), 0.);
-      std::fill(state.tangential_tractions.begin(),
-                state.tangential_tractions.end(),
-                Tensor<1, dim>());
-      accepted_state = state;
-      std::fill(accepted_relative_displacement.begin(),
-                accepted_relative_displacement.end(),
-                Tensor<1, dim>());
-      std::fill(slip_accumulated.begin(),
-                slip_accumulated.end(),
-                Tensor<1, dim>());
+      directions.fix_constrained_components(coupling.secondary_surface(),
+                                            constraints);
     }
 
 
@@ -273,53 +49,7 @@ namespace Common
     void
     ContactEnforcement<dim>::commit(const VectorType &u)
     {
-      const auto        &surface = coupling.secondary_surface();
-      const unsigned int n       = coupling.n_rows();
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const Tensor<1, dim> relative = coupling.relative_displacement(j, u);
-          if (state.status[j] != PointStatus::open)
-            {
-              const Tensor<1, dim> increment =
-                free_tangential_part(j,
-                                     relative -
-                                       accepted_relative_displacement[j]);
-              double fraction = 1.;
-              if (accepted_state.status[j] == PointStatus::open)
-                {
-                  // Closed during the step: credit the part of the step
-                  // after the contact edge passed the node, with the edge
-                  // midway between the last closed and first open nodes at
-                  // the start (old) and end (new) of the step.
-                  const Point<dim> &x     = surface.node(j).position;
-                  double            d_old = std::numeric_limits<double>::max();
-                  double            d_new = d_old, spacing = d_old;
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      if (i == j || !coupling.row(i).has_partner)
-                        continue;
-                      const double d = x.distance(surface.node(i).position);
-                      spacing        = std::min(spacing, d);
-                      if (accepted_state.status[i] != PointStatus::open)
-                        d_old = std::min(d_old, d);
-                      if (state.status[i] == PointStatus::open)
-                        d_new = std::min(d_new, d);
-                    }
-                  if (d_old < std::numeric_limits<double>::max() &&
-                      d_new < std::numeric_limits<double>::max() &&
-                      d_old + d_new > spacing)
-                    fraction = std::clamp((d_new - 0.5 * spacing) /
-                                            (d_old + d_new - spacing),
-                                          0.,
-                                          1.);
-                  else
-                    fraction = 0.5;
-                }
-              slip_accumulated[j] += fraction * increment;
-            }
-          accepted_relative_displacement[j] = relative;
-        }
-      accepted_state = state;
+      contact_state.commit(node_kinematics(coupling, u));
     }
 
 
@@ -328,7 +58,7 @@ namespace Common
     void
     ContactEnforcement<dim>::restore()
     {
-      state = accepted_state;
+      contact_state.restore();
     }
 
 
@@ -337,11 +67,7 @@ namespace Common
     void
     ContactEnforcement<dim>::begin_step()
     {
-      history.clear();
-      history.push_back(codes(state));
-      cycling                  = false;
-      last_update_extrapolated = false;
-      extrapolation_enabled    = parameters.accelerate_release;
+      policy.begin_step(contact_state);
     }
 
 
@@ -353,62 +79,7 @@ namespace Common
       const AffineConstraints<double> &constraints,
       DynamicSparsityPattern          &dsp) const
     {
-      // Primary DoFs coupled to each DoF of a paired secondary node.
-      std::map<types::global_dof_index, std::vector<types::global_dof_index>>
-        partners;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner)
-            continue;
-          std::vector<types::global_dof_index> primary_dofs;
-          for (const auto &entry : row.primary_weights)
-            for (unsigned int e = 0; e < dim; ++e)
-              primary_dofs.push_back(
-                coupling.primary_node(entry.first).dofs[e]);
-          for (unsigned int d = 0; d < dim; ++d)
-            partners[coupling.secondary_surface().node(j).dofs[d]] =
-              primary_dofs;
-        }
-
-      // Each cell's DoFs, closed under the constraints (hanging-node
-      // parents) and the contact partners, in any order of chaining: every
-      // coupling any active set can create lies in that closure.
-      std::vector<types::global_dof_index> cell_dofs(
-        dof_handler.get_fe().n_dofs_per_cell());
-      std::vector<types::global_dof_index> closure;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(cell_dofs);
-            closure.assign(cell_dofs.begin(), cell_dofs.end());
-            bool touches_contact = false;
-            for (unsigned int n = 0; n < closure.size(); ++n)
-              {
-                const types::global_dof_index i = closure[n];
-                if (const auto *entries = constraints.get_constraint_entries(i))
-                  for (const auto &entry : *entries)
-                    if (std::find(closure.begin(),
-                                  closure.end(),
-                                  entry.first) == closure.end())
-                      closure.push_back(entry.first);
-                const auto it = partners.find(i);
-                if (it != partners.end())
-                  {
-                    touches_contact = true;
-                    for (const auto k : it->second)
-                      if (std::find(closure.begin(), closure.end(), k) ==
-                          closure.end())
-                        closure.push_back(k);
-                  }
-              }
-            if (!touches_contact)
-              continue;
-            std::sort(closure.begin(), closure.end());
-            for (const auto i : closure)
-              if (dsp.row_index_set().is_element(i))
-                dsp.add_entries(i, closure.begin(), closure.end(), true);
-          }
+      add_contact_sparsity(coupling, dof_handler, constraints, dsp);
     }
 
 
@@ -419,129 +90,7 @@ namespace Common
       AffineConstraints<double> &constraints,
       const VectorType          &u) const
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          if (state.status[j] == PointStatus::open)
-            continue;
-          const MortarRow<dim> &row  = coupling.row(j);
-          const auto           &node = coupling.secondary_surface().node(j);
-
-          bool all_free = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            all_free = all_free && !constraints.is_constrained(node.dofs[d]);
-
-          // Stick: D du_j = sum_k M_jk du_k + g~ n + D P(w(u) - w_old):
-          // after the increment the weighted gap vanishes and the relative
-          // tangential displacement is that of the last accepted step.
-          const Tensor<1, dim> target_defect =
-            state.status[j] == PointStatus::stick ?
-              coupling.weighted_gap(j, u) / row.weight * row.normal +
-                slip_increment(j, u) :
-              Tensor<1, dim>();
-          if (state.status[j] == PointStatus::stick && all_free)
-            {
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  std::vector<std::pair<types::global_dof_index, double>>
-                    entries;
-                  for (const auto &[k, M] : row.primary_weights)
-                    if (std::abs(M) > 1e-14 * row.weight)
-                      entries.emplace_back(coupling.primary_node(k).dofs[d],
-                                           M / row.weight);
-                  constraints.add_line(node.dofs[d]);
-                  constraints.add_entries(node.dofs[d], entries);
-                  constraints.set_inhomogeneity(node.dofs[d], target_defect[d]);
-                }
-              continue;
-            }
-
-          // A stick node with some DoFs fixed (a symmetry plane): the
-          // normal condition and stick along the free tangents, A du_j =
-          // A (sum_k M_jk du_k / D + target_defect) with the rows of A the
-          // normal and the free tangents, solved for the free components F:
-          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target_defect) - A_X
-          // du_X).
-          std::vector<unsigned int> free_components, fixed_components;
-          for (unsigned int d = 0; d < dim; ++d)
-            (constraints.is_constrained(node.dofs[d]) ? fixed_components :
-                                                        free_components)
-              .push_back(d);
-          const unsigned int m = 1 + free_tangents[j].size();
-          if (state.status[j] == PointStatus::stick &&
-              !free_tangents[j].empty() && free_components.size() == m)
-            {
-              FullMatrix<double> A(m, dim), A_F(m, m), A_F_inverse(m, m);
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  A(0, d) = row.normal[d];
-                  for (unsigned int i = 1; i < m; ++i)
-                    A(i, d) = free_tangents[j][i - 1][d];
-                }
-              for (unsigned int i = 0; i < m; ++i)
-                for (unsigned int f = 0; f < m; ++f)
-                  A_F(i, f) = A(i, free_components[f]);
-              if (std::abs(A_F.determinant()) > 1e-6)
-                {
-                  A_F_inverse.invert(A_F);
-                  FullMatrix<double> S(m, dim); // A_F^-1 A
-                  A_F_inverse.mmult(S, A);
-                  for (unsigned int f = 0; f < m; ++f)
-                    {
-                      std::vector<std::pair<types::global_dof_index, double>>
-                             entries;
-                      double inhomogeneity = 0.;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        {
-                          inhomogeneity += S(f, d) * target_defect[d];
-                          if (std::abs(S(f, d)) < 1e-14)
-                            continue;
-                          for (const auto &[k, M] : row.primary_weights)
-                            if (std::abs(M) > 1e-14 * row.weight)
-                              entries.emplace_back(
-                                coupling.primary_node(k).dofs[d],
-                                S(f, d) * M / row.weight);
-                        }
-                      for (const unsigned int x : fixed_components)
-                        if (std::abs(S(f, x)) > 1e-14)
-                          entries.emplace_back(node.dofs[x], -S(f, x));
-                      const auto dof = node.dofs[free_components[f]];
-                      constraints.add_line(dof);
-                      constraints.add_entries(dof, entries);
-                      constraints.set_inhomogeneity(dof, inhomogeneity);
-                    }
-                  continue;
-                }
-            }
-
-          // Normal condition only (slip, or a node without a free tangent
-          // direction): solve the linearised condition for the free
-          // component with the largest normal share.
-          int c = -1;
-          for (unsigned int d = 0; d < dim; ++d)
-            if (!constraints.is_constrained(node.dofs[d]) &&
-                (c < 0 || std::abs(row.normal[d]) > std::abs(row.normal[c])))
-              c = d;
-          if (c < 0 || std::abs(row.normal[c]) < 1e-6)
-            continue;
-
-          // n.(sum_k M_jk du_k - D du_j) = -g(u), solved for du_{j,c}.
-          const double scale = 1. / (row.weight * row.normal[c]);
-          std::vector<std::pair<types::global_dof_index, double>> entries;
-          for (unsigned int e = 0; e < dim; ++e)
-            if (e != static_cast<unsigned int>(c) &&
-                std::abs(row.normal[e]) > 1e-14)
-              entries.emplace_back(node.dofs[e],
-                                   -row.normal[e] / row.normal[c]);
-          for (const auto &[k, M] : row.primary_weights)
-            for (unsigned int e = 0; e < dim; ++e)
-              if (std::abs(M * row.normal[e]) > 1e-14 * row.weight)
-                entries.emplace_back(coupling.primary_node(k).dofs[e],
-                                     M * row.normal[e] * scale);
-          constraints.add_line(node.dofs[c]);
-          constraints.add_entries(node.dofs[c], entries);
-          constraints.set_inhomogeneity(node.dofs[c],
-                                        coupling.weighted_gap(j, u) * scale);
-        }
+      normal->add_constraints(coupling, contact_state, u, constraints);
     }
 
 
@@ -557,99 +106,24 @@ namespace Common
       MatrixType                      &matrix,
       VectorType                      &residual) const
     {
-      if (!has_friction())
-        return;
-      const double                         mu = parameters.friction_coefficient;
-      std::vector<types::global_dof_index> B_dofs;
-      Vector<double>                       B;
-      std::map<types::global_dof_index, double> stiffness_row;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const auto &node = coupling.secondary_surface().node(j);
-          if (state.status[j] != PointStatus::slip ||
-              free_tangents[j].empty() ||
-              !locally_owned.is_element(node.dofs[0]))
-            continue;
-          const MortarRow<dim> &row = coupling.row(j);
+      friction->assemble(coupling,
+                         contact_state,
+                         constraints,
+                         u,
+                         bulk_matrix,
+                         bulk_residual,
+                         locally_owned,
+                         matrix,
+                         residual);
+    }
 
-          // lambda_j(u) = n.r_j(u)/D_j and its gradient -n^T K_j / D_j.
-          double rn = 0.;
-          stiffness_row.clear();
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              Assert(locally_owned.is_element(node.dofs[c]),
-                     ExcInternalError());
-              rn += bulk_residual(node.dofs[c]) * row.normal[c];
-              if (row.normal[c] == 0.)
-                continue;
-              // end() once: a Trilinos row iterator copies its row when
-              // it is made.
-              const auto end = bulk_matrix.end(node.dofs[c]);
-              for (auto entry = bulk_matrix.begin(node.dofs[c]); entry != end;
-                   ++entry)
-                stiffness_row[entry->column()] +=
-                  row.normal[c] * entry->value();
-            }
-          const double pressure = rn / row.weight;
 
-          // Force -mu lambda B_e: D mu lambda e on the secondary node, its
-          // reaction on the primary nodes. Tangent -(mu/D) B_e (n^T K_j).
-          const Tensor<1, dim> &e = state.slip_direction[j];
-          gap_gradient(coupling, j, e, B_dofs, B);
-          std::vector<types::global_dof_index> dofs = B_dofs;
-          for (const auto &entry : stiffness_row)
-            if (std::find(B_dofs.begin(), B_dofs.end(), entry.first) ==
-                B_dofs.end())
-              dofs.push_back(entry.first);
-          // Only the rows of B's DoFs are non-zero: a rectangular block.
-          FullMatrix<double> K(B_dofs.size(), dofs.size());
-          Vector<double>     r(B_dofs.size());
-          for (unsigned int a = 0; a < B_dofs.size(); ++a)
-            {
-              r(a) = -mu * pressure * B(a);
-              for (unsigned int b = 0; b < dofs.size(); ++b)
-                {
-                  const auto it = stiffness_row.find(dofs[b]);
-                  if (it != stiffness_row.end())
-                    K(a, b) = -mu / row.weight * B(a) * it->second;
-                }
-            }
-          // In 3D the traction turns: across e, along t2 = n x e, the
-          // traction of the next iterate is k v.t2 (slip_linearisation()),
-          // a force -k (v.t2) B_t2 with v.t2 = B_t2 . u / D + const and
-          // tangent (k/D) B_t2 B_t2^T. (In 2D the tangent line holds e
-          // alone.)
-          if constexpr (dim == 3)
-            if (state.slip_turning_stiffness[j] > 0.)
-              {
-                Tensor<1, dim> t2 = cross_product_3d(row.normal, e);
-                t2 /= t2.norm();
-                std::vector<types::global_dof_index> t2_dofs;
-                Vector<double>                       B_t2;
-                gap_gradient(coupling, j, t2, t2_dofs, B_t2);
-                Assert(t2_dofs == B_dofs, ExcInternalError());
-                const double k           = state.slip_turning_stiffness[j];
-                const double traction_t2 = k * (slip_increment(j, u) * t2);
-                for (unsigned int a = 0; a < B_t2.size(); ++a)
-                  {
-                    r(a) -= traction_t2 * B_t2(a);
-                    for (unsigned int b = 0; b < B_t2.size(); ++b)
-                      K(a, b) += k / row.weight * B_t2(a) * B_t2(b);
-                  }
-              }
-          // As the square distribute_local_to_global() with matrix and
-          // vector: the inhomogeneities of constrained columns move to the
-          // right-hand side, then rows and columns are condensed.
-          for (unsigned int b = 0; b < dofs.size(); ++b)
-            if (constraints.is_inhomogeneously_constrained(dofs[b]))
-              {
-                const double g = constraints.get_inhomogeneity(dofs[b]);
-                for (unsigned int a = 0; a < B_dofs.size(); ++a)
-                  r(a) -= K(a, b) * g;
-              }
-          constraints.distribute_local_to_global(K, B_dofs, dofs, matrix);
-          constraints.distribute_local_to_global(r, B_dofs, residual);
-        }
+
+    template <int dim>
+    bool
+    ContactEnforcement<dim>::has_friction() const
+    {
+      return friction->has_friction();
     }
 
 
@@ -663,39 +137,13 @@ namespace Common
       MatrixType                      &matrix,
       VectorType                      &residual) const
     {
-      std::vector<types::global_dof_index> dofs;
-      Vector<double>                       B;
-      FullMatrix<double>                   K;
-      Vector<double>                       r;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (state.status[j] == PointStatus::open ||
-              !locally_owned.is_element(
-                coupling.secondary_surface().node(j).dofs[0]))
-            continue;
-          // A closed node is a spring for the whole iteration, also where
-          // its gap has turned positive (a touching node's weighted gap is
-          // positive when the surfaces curve apart): without it the first
-          // iteration of a body held only by contact is singular. The
-          // active-set update then opens the node; at convergence the
-          // set agrees with the sign of the gap and p = k max(0, -g).
-          const double gap     = coupling.weighted_gap(j, u) / row.weight;
-          const double dp_dgap = -parameters.penalty_stiffness;
-          const double p       = dp_dgap * gap;
-
-          gap_gradient(coupling, j, row.normal, dofs, B);
-          K.reinit(dofs.size(), dofs.size());
-          r.reinit(dofs.size());
-          // Residual f_ext - f_int + p B; tangent -(dp/dg~) B B^T.
-          for (unsigned int a = 0; a < dofs.size(); ++a)
-            {
-              r(a) = p * B(a);
-              for (unsigned int b = 0; b < dofs.size(); ++b)
-                K(a, b) = -dp_dgap / row.weight * B(a) * B(b);
-            }
-          constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
-        }
+      normal->assemble(coupling,
+                       contact_state,
+                       constraints,
+                       u,
+                       locally_owned,
+                       matrix,
+                       residual);
     }
 
 
@@ -705,33 +153,11 @@ namespace Common
     ContactEnforcement<dim>::update_pressures(const VectorType &u,
                                               const VectorType &bulk_residual)
     {
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row     = coupling.row(j);
-          state.tangential_tractions[j] = Tensor<1, dim>();
-          if (state.status[j] == PointStatus::open)
-            {
-              state.pressures[j] = 0.;
-              continue;
-            }
-          if (parameters.enforcement == Enforcement::penalty)
-            state.pressures[j] =
-              NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
-                                                   row.weight,
-                                                 parameters.penalty_stiffness);
-          else
-            {
-              // Equilibrium of node j: r_j + D_j(-lambda n + t) = 0.
-              const auto    &node = coupling.secondary_surface().node(j);
-              Tensor<1, dim> r;
-              for (unsigned int c = 0; c < dim; ++c)
-                r[c] = bulk_residual(node.dofs[c]);
-              state.pressures[j] = (r * row.normal) / row.weight;
-              if (has_friction())
-                state.tangential_tractions[j] =
-                  -free_tangential_part(j, r) / row.weight;
-            }
-        }
+      normal->update_tractions(coupling,
+                               u,
+                               bulk_residual,
+                               friction->has_friction(),
+                               contact_state);
     }
 
 
@@ -743,21 +169,62 @@ namespace Common
       const IndexSet                  &locally_owned,
       VectorType                      &residual) const
     {
-      std::vector<types::global_dof_index> dofs;
-      Vector<double>                       B;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          const Tensor<1, dim>  traction =
-            -state.pressures[j] * row.normal + state.tangential_tractions[j];
-          if (traction.norm() == 0. ||
-              !locally_owned.is_element(
-                coupling.secondary_surface().node(j).dofs[0]))
-            continue;
-          // B of d = -traction: D t on the secondary node, -M t on primary.
-          gap_gradient(coupling, j, -traction, dofs, B);
-          constraints.distribute_local_to_global(B, dofs, residual);
-        }
+      add_traction_forces(coupling,
+                          contact_state,
+                          constraints,
+                          locally_owned,
+                          residual);
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    ContactEnforcement<dim>::update_active_set(const VectorType &u)
+    {
+      return policy.update(node_kinematics(coupling, u),
+                           *normal,
+                           *friction,
+                           contact_state);
+    }
+
+
+
+    template <int dim>
+    bool
+    ContactEnforcement<dim>::is_cycling() const
+    {
+      return policy.is_cycling();
+    }
+
+
+
+    template <int dim>
+    double
+    ContactEnforcement<dim>::complementarity_norm(const VectorType &u) const
+    {
+      return policy.complementarity_norm(node_kinematics(coupling, u),
+                                         *normal,
+                                         *friction,
+                                         contact_state);
+    }
+
+
+
+    template <int dim>
+    PointStatus
+    ContactEnforcement<dim>::status(const unsigned int j) const
+    {
+      return contact_state.node(j).status;
+    }
+
+
+
+    template <int dim>
+    const Tensor<1, dim> &
+    ContactEnforcement<dim>::tangential_traction(const unsigned int j) const
+    {
+      return contact_state.node(j).tangential_traction;
     }
 
 
@@ -767,316 +234,8 @@ namespace Common
     ContactEnforcement<dim>::slip_increment(const unsigned int j,
                                             const VectorType  &u) const
     {
-      return free_tangential_part(j,
-                                  coupling.relative_displacement(j, u) -
-                                    accepted_relative_displacement[j]);
-    }
-
-
-
-    template <int dim>
-    Tensor<1, dim>
-    ContactEnforcement<dim>::free_tangential_part(const unsigned int    j,
-                                                  const Tensor<1, dim> &x) const
-    {
-      Tensor<1, dim> result;
-      for (const auto &b : free_tangents[j])
-        result += (x * b) * b;
-      return result;
-    }
-
-
-
-    template <int dim>
-    std::pair<double, Tensor<1, dim>>
-    ContactEnforcement<dim>::complementarity(const unsigned int j,
-                                             const VectorType  &u) const
-    {
-      const MortarRow<dim> &row = coupling.row(j);
-      const double          gap = coupling.weighted_gap(j, u) / row.weight;
-      const double          c   = ncp_constant(j);
-      const double          C_n =
-        normally_free[j] ?
-                   NormalContactLaw::complementarity(state.pressures[j], gap, c) :
-                   0.;
-      Tensor<1, dim> C_t;
-      if (has_friction() && !free_tangents[j].empty())
-        C_t =
-          CoulombLaw::complementarity(state.tangential_tractions[j],
-                                      slip_increment(j, u),
-                                      parameters.friction_coefficient *
-                                        std::max(0.,
-                                                 state.pressures[j] - c * gap),
-                                      tangential_ncp_constant(j));
-      return {C_n, C_t};
-    }
-
-
-
-    template <int dim>
-    double
-    ContactEnforcement<dim>::violation(const unsigned int j,
-                                       const VectorType  &u) const
-    {
-      const auto [C_n, C_t] = complementarity(j, u);
-      return (std::abs(C_n) + C_t.norm()) * coupling.row(j).weight;
-    }
-
-
-
-    template <int dim>
-    std::vector<int>
-    ContactEnforcement<dim>::codes(const State &s) const
-    {
-      std::vector<int> result(s.status.size());
-      for (unsigned int j = 0; j < s.status.size(); ++j)
-        {
-          result[j] = static_cast<int>(s.status[j]);
-          // Along a single free tangent (2D, or a symmetry plane in 3D)
-          // the slip direction is one of its two senses.
-          if (free_tangents[j].size() == 1 &&
-              s.status[j] == PointStatus::slip &&
-              s.slip_direction[j].norm() > 0.)
-            result[j] +=
-              (s.slip_direction[j] * free_tangents[j][0] < 0. ? 10 : 0);
-        }
-      return result;
-    }
-
-
-
-    template <int dim>
-    unsigned int
-    ContactEnforcement<dim>::update_active_set(const VectorType &u)
-    {
-      const unsigned int n = coupling.n_rows();
-      std::vector<bool>  closed(n, false), next(n, false);
-      unsigned int       n_closed = 0, n_opened = 0;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          closed[j]                 = (state.status[j] != PointStatus::open);
-          if (!row.has_partner)
-            continue;
-          const double gap = coupling.weighted_gap(j, u) / row.weight;
-          next[j]          = (parameters.enforcement == Enforcement::penalty ?
-                                NormalContactLaw::penalty_derivative(
-                         gap,
-                         parameters.penalty_stiffness) != 0. :
-                                NormalContactLaw::is_active(state.pressures[j],
-                                                   gap,
-                                                   ncp_constant(j)));
-          n_closed += (next[j] && !closed[j]);
-          n_opened += (!next[j] && closed[j]);
-        }
-
-      if (n_closed > 0 && last_update_extrapolated)
-        extrapolation_enabled = false;
-      last_update_extrapolated = false;
-
-      if (extrapolation_enabled && n_closed == 0 && n_opened > 0)
-        {
-          const auto               &surface = coupling.secondary_surface();
-          std::vector<unsigned int> opened, kept;
-          for (unsigned int j = 0; j < n; ++j)
-            if (closed[j] && !next[j])
-              opened.push_back(j);
-            else if (next[j])
-              kept.push_back(j);
-          // Distance of each opened node to the closed set.
-          std::vector<double> band(opened.size(),
-                                   std::numeric_limits<double>::max());
-          for (unsigned int r = 0; r < opened.size(); ++r)
-            for (const unsigned int j : kept)
-              band[r] = std::min(band[r],
-                                 surface.node(opened[r]).position.distance(
-                                   surface.node(j).position));
-          std::vector<unsigned int> also_opened;
-          for (const unsigned int j : kept)
-            for (unsigned int r = 0; r < opened.size(); ++r)
-              if (surface.node(j).position.distance(
-                    surface.node(opened[r]).position) <
-                  2. * band[r] * (1. - 1e-10))
-                {
-                  also_opened.push_back(j);
-                  break;
-                }
-          // Never open the whole zone: keep the plain step then.
-          if (!kept.empty() && also_opened.size() < kept.size())
-            {
-              for (const unsigned int j : also_opened)
-                next[j] = false;
-              last_update_extrapolated = !also_opened.empty();
-            }
-        }
-
-      // Stick or slip for the closed nodes.
-      State proposed = state;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          proposed.slip_direction[j]         = Tensor<1, dim>();
-          proposed.slip_turning_stiffness[j] = 0.;
-          if (!next[j])
-            {
-              proposed.status[j] = PointStatus::open;
-              continue;
-            }
-          if (!has_friction())
-            {
-              proposed.status[j] = PointStatus::slip;
-              continue;
-            }
-          if (free_tangents[j].empty())
-            {
-              proposed.status[j] = PointStatus::stick;
-              continue;
-            }
-          const MortarRow<dim> &row = coupling.row(j);
-          const double          c   = ncp_constant(j);
-          const double          bound =
-            parameters.friction_coefficient *
-            std::max(0.,
-                     state.pressures[j] -
-                       c * coupling.weighted_gap(j, u) / row.weight);
-          const Tensor<1, dim> v   = slip_increment(j, u);
-          const double         c_t = tangential_ncp_constant(j);
-          if (CoulombLaw::is_sticking(state.tangential_tractions[j],
-                                      v,
-                                      bound,
-                                      c_t))
-            proposed.status[j] = PointStatus::stick;
-          else
-            {
-              proposed.status[j] = PointStatus::slip;
-              const auto step =
-                CoulombLaw::slip_linearisation(state.tangential_tractions[j],
-                                               v,
-                                               bound,
-                                               c_t);
-              proposed.slip_direction[j] = step.direction;
-              // Bounded, so that a point just past the stick limit does not
-              // make the tangent ill-conditioned; the converged state does
-              // not depend on k.
-              // Only a node free to slip in the whole tangent plane turns.
-              if (free_tangents[j].size() == dim - 1)
-                proposed.slip_turning_stiffness[j] =
-                  std::min(step.turning_stiffness, 1e3 * c_t);
-            }
-        }
-
-      // A set seen before in this step means ping-pong (typically a corner
-      // and a mid-side node of a Q2 face trading places at the contact
-      // edge, or a node at the stick-slip boundary). Then change only the
-      // point with the largest complementarity violation whose change
-      // leads to a set not seen yet.
-      const std::vector<int> current_codes = codes(state);
-      std::vector<int>       next_codes    = codes(proposed);
-      const auto             seen = [this](const std::vector<int> &set) {
-        return std::find(history.begin(), history.end(), set) != history.end();
-      };
-      cycling = false;
-      if (next_codes != current_codes && seen(next_codes))
-        {
-          extrapolation_enabled = false;
-          std::vector<std::pair<double, unsigned int>> violations;
-          for (unsigned int j = 0; j < n; ++j)
-            if (next_codes[j] != current_codes[j])
-              violations.emplace_back(violation(j, u), j);
-          std::sort(violations.rbegin(), violations.rend());
-          cycling = true;
-          for (const auto &[size, j] : violations)
-            {
-              std::vector<int> single = current_codes;
-              single[j]               = next_codes[j];
-              if (!seen(single))
-                {
-                  State one             = state;
-                  one.status[j]         = proposed.status[j];
-                  one.slip_direction[j] = proposed.slip_direction[j];
-                  one.slip_turning_stiffness[j] =
-                    proposed.slip_turning_stiffness[j];
-                  proposed   = one;
-                  next_codes = single;
-                  cycling    = false;
-                  break;
-                }
-            }
-        }
-
-      unsigned int n_changed = 0;
-      for (unsigned int j = 0; j < n; ++j)
-        n_changed += (next_codes[j] != current_codes[j]);
-      // In 3D a slip direction may turn without changing the code.
-      state.status                 = proposed.status;
-      state.slip_direction         = proposed.slip_direction;
-      state.slip_turning_stiffness = proposed.slip_turning_stiffness;
-      history.push_back(next_codes);
-      return n_changed;
-    }
-
-
-
-    template <int dim>
-    bool
-    ContactEnforcement<dim>::is_cycling() const
-    {
-      return cycling;
-    }
-
-
-
-    template <int dim>
-    double
-    ContactEnforcement<dim>::complementarity_norm(const VectorType &u) const
-    {
-      if (parameters.enforcement == Enforcement::penalty)
-        return 0.;
-      double sum = 0.;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        {
-          const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner)
-            continue;
-          const auto [C_n, C_t] = complementarity(j, u);
-          sum += (C_n * C_n + C_t.norm_square()) * row.weight * row.weight;
-        }
-      return std::sqrt(sum);
-    }
-
-
-
-    template <int dim>
-    double
-    ContactEnforcement<dim>::pressure(const unsigned int j) const
-    {
-      return state.pressures[j];
-    }
-
-
-
-    template <int dim>
-    bool
-    ContactEnforcement<dim>::is_active(const unsigned int j) const
-    {
-      return state.status[j] != PointStatus::open;
-    }
-
-
-
-    template <int dim>
-    PointStatus
-    ContactEnforcement<dim>::status(const unsigned int j) const
-    {
-      return state.status[j];
-    }
-
-
-
-    template <int dim>
-    const Tensor<1, dim> &
-    ContactEnforcement<dim>::tangential_traction(const unsigned int j) const
-    {
-      return state.tangential_tractions[j];
+      return contact_state.slip_increment(j,
+                                          coupling.relative_displacement(j, u));
     }
 
 
@@ -1085,7 +244,25 @@ namespace Common
     const Tensor<1, dim> &
     ContactEnforcement<dim>::accumulated_slip(const unsigned int j) const
     {
-      return slip_accumulated[j];
+      return contact_state.accumulated_slip(j);
+    }
+
+
+
+    template <int dim>
+    double
+    ContactEnforcement<dim>::pressure(const unsigned int j) const
+    {
+      return contact_state.node(j).pressure;
+    }
+
+
+
+    template <int dim>
+    bool
+    ContactEnforcement<dim>::is_active(const unsigned int j) const
+    {
+      return contact_state.is_closed(j);
     }
 
 
@@ -1094,11 +271,7 @@ namespace Common
     unsigned int
     ContactEnforcement<dim>::n_active() const
     {
-      return std::count_if(state.status.begin(),
-                           state.status.end(),
-                           [](const PointStatus s) {
-                             return s != PointStatus::open;
-                           });
+      return contact_state.n_closed();
     }
 
 
@@ -1107,21 +280,61 @@ namespace Common
     bool
     ContactEnforcement<dim>::touches_search_edge() const
     {
-      const auto &surface = coupling.secondary_surface();
-      for (unsigned int f = 0; f < surface.n_faces(); ++f)
-        {
-          bool any_active = false, any_unpaired = false;
-          for (const unsigned int j : surface.face(f).nodes)
-            {
-              any_active = any_active || state.status[j] != PointStatus::open;
-              // A node without measure (on the axis) bounds no search.
-              any_unpaired = any_unpaired || (!coupling.row(j).has_partner &&
-                                              coupling.row(j).weight > 0.);
-            }
-          if (any_active && any_unpaired)
-            return true;
-        }
-      return false;
+      return ActiveSetPolicy<dim>::touches_search_edge(coupling, contact_state);
+    }
+
+
+
+    template <int dim>
+    double
+    ContactEnforcement<dim>::ncp_constant(const unsigned int j) const
+    {
+      return policy.ncp_constant(coupling.row(j).mesh_size);
+    }
+
+
+
+    template <int dim>
+    double
+    ContactEnforcement<dim>::tangential_ncp_constant(const unsigned int j) const
+    {
+      return policy.tangential_ncp_constant(coupling.row(j).mesh_size);
+    }
+
+
+
+    template <int dim>
+    const ContactState<dim> &
+    ContactEnforcement<dim>::state() const
+    {
+      return contact_state;
+    }
+
+
+
+    template <int dim>
+    const NormalEnforcement<dim> &
+    ContactEnforcement<dim>::normal_enforcement() const
+    {
+      return *normal;
+    }
+
+
+
+    template <int dim>
+    const FrictionModel<dim> &
+    ContactEnforcement<dim>::friction_model() const
+    {
+      return *friction;
+    }
+
+
+
+    template <int dim>
+    const ActiveSetPolicy<dim> &
+    ContactEnforcement<dim>::active_set_policy() const
+    {
+      return policy;
     }
 
     template class ContactEnforcement<2>;

@@ -38,15 +38,17 @@ namespace Common
       load_program.parse_parameters(prm);
       output.parse_parameters(prm);
       run_control.parse_parameters(prm);
-      // Friction with mu = 0 is frictionless and keeps the system
-      // symmetric.
-      AssertThrow(
-        !(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
-          contact.friction_law != Contact::FrictionLaw::frictionless &&
-          contact.friction_coefficient > 0.),
-        ExcMessage("Linear solver 'cg amg' needs a symmetric system, which "
-                   "friction does not give; use 'gmres amg' or a direct "
-                   "solver."));
+      // Only friction that acts (Coulomb with mu > 0) makes the system
+      // non-symmetric; 'coulomb' with mu = 0 is frictionless.
+      const bool with_friction =
+        contact.friction_law == Contact::FrictionLaw::coulomb &&
+        contact.friction_coefficient > 0.;
+      AssertThrow(!(linear_solver.type == Solvers::LinearSolverType::cg_amg &&
+                    with_friction),
+                  ExcMessage(
+                    "Linear solver 'cg amg' needs a symmetric system, which "
+                    "friction does not give; use 'gmres amg' or a direct "
+                    "solver."));
 
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);

@@ -44,7 +44,8 @@ namespace Common
                           "'cg amg' (conjugate gradients with smoothed-"
                           "aggregation algebraic multigrid on the rigid-body "
                           "modes; symmetric systems only, i.e. without "
-                          "friction) or 'gmres amg' (GMRES with the same "
+                          "friction or with a friction coefficient of 0) or "
+                          "'gmres amg' (GMRES with the same "
                           "multigrid; also with friction). The multigrid "
                           "solvers are for 3D cases beyond a direct "
                           "solver's memory or time.");

@@ -1,10 +1,20 @@
 /**
  * @file contact_enforcement.h
- * Enforcement of the normal contact condition on the mortar rows of a
- * contact pair: the active set of the semismooth Newton method, its
- * condensation into affine constraints (dual Lagrange multipliers), the
- * penalty alternative, Coulomb friction, and the recovery of the nodal
- * tractions.
+ * Normal and frictional contact on the mortar rows of a contact pair, as
+ * one object: a facade that composes the parts, each in its own file, and
+ * only delegates to them:
+ * - FreeDirections (free_directions.h): the directions in which each
+ *   secondary node may move;
+ * - ContactState (contact_state.h): status, pressure, tangential traction,
+ *   slip direction and turning stiffness of every node, and the friction
+ *   history of the accepted load steps;
+ * - NormalEnforcement (normal_enforcement.h): condensed dual Lagrange
+ *   multipliers or penalty;
+ * - FrictionModel (friction_model.h): frictionless or Coulomb;
+ * - ActiveSetPolicy (active_set_policy.h): the semismooth Newton
+ *   active-set rule with its safeguards;
+ * - contact_assembly.h: gathering nodal kinematics and scattering contact
+ *   terms.
  *
  * With dual multipliers D is diagonal, so an active node's constraint
  * \f$\tilde g_j(u) = 0\f$ can be solved for one displacement component of
@@ -36,8 +46,13 @@
 #ifndef common_contact_contact_enforcement_h
 #define common_contact_contact_enforcement_h
 
+#include <common/contact/active_set_policy.h>
 #include <common/contact/contact_parameters.h>
+#include <common/contact/contact_state.h>
+#include <common/contact/free_directions.h>
+#include <common/contact/friction_model.h>
 #include <common/contact/mortar_coupling.h>
+#include <common/contact/normal_enforcement.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -46,30 +61,12 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <string>
-#include <utility>
-#include <vector>
+#include <memory>
 
 namespace Common
 {
   namespace Contact
   {
-    /** State of a secondary node in the active set; the values are
-     * those of the "contact_status" output field. */
-    enum class PointStatus
-    {
-      /** Not in contact. */
-      open = 0,
-      /** In contact, no relative tangential motion in the step. */
-      stick = 1,
-      /** In contact and sliding (every closed node without friction). */
-      slip = 2
-    };
-
-    /** @brief "open", "stick" or "slip". */
-    std::string
-    to_string(const PointStatus status);
-
     /**
      * @brief Normal and frictional contact enforcement on the rows of a
      * MortarCoupling.
@@ -160,7 +157,8 @@ namespace Common
        * @brief Lagrange multipliers: add one constraint per active node on
        * the Newton increment, such that the weighted gap of the updated
        * displacement vanishes. @p constraints must already hold the
-       * Dirichlet constraints (it is not closed here).
+       * Dirichlet constraints (it is not closed here). Nothing with a
+       * penalty (NormalEnforcement::add_constraints()).
        * @param[in] u Current displacement (ghosted).
        */
       void
@@ -174,7 +172,8 @@ namespace Common
        * its linearisation, which couples the node's bulk stiffness row into
        * its primary partners' rows (CoulombLaw::slip_linearisation(); the
        * second term exists in 3D only and vanishes at convergence). Matrix
-       * and vector are not compressed here.
+       * and vector are not compressed here. Nothing without friction
+       * (FrictionModel::assemble()).
        * @param[in] u Current displacement (ghosted).
        * @param[in] bulk_matrix Tangent of the bulk residual, condensed with
        * the Dirichlet and hanging-node constraints only; supplies the rows
@@ -198,7 +197,8 @@ namespace Common
       /**
        * @brief Penalty: add tangent and residual of the penalty terms for
        * the nodes whose first DoF is in @p locally_owned. Matrix and vector
-       * are not compressed here.
+       * are not compressed here. Nothing with Lagrange multipliers
+       * (NormalEnforcement::assemble()).
        */
       void
       assemble_penalty(const dealii::AffineConstraints<double> &constraints,
@@ -311,56 +311,29 @@ namespace Common
       double
       tangential_ncp_constant(const unsigned int j) const;
 
+      /** @brief The state of the nodes (ContactState). */
+      const ContactState<dim> &
+      state() const;
+
+      /** @brief The normal enforcement (NormalEnforcement). */
+      const NormalEnforcement<dim> &
+      normal_enforcement() const;
+
+      /** @brief The friction model (FrictionModel). */
+      const FrictionModel<dim> &
+      friction_model() const;
+
+      /** @brief The active-set policy (ActiveSetPolicy). */
+      const ActiveSetPolicy<dim> &
+      active_set_policy() const;
+
     private:
-      /** State of all nodes that an accepted step must keep. */
-      struct State
-      {
-        std::vector<PointStatus>            status;
-        std::vector<dealii::Tensor<1, dim>> slip_direction;
-        /** Turning stiffness of a slipping node (MPa/mm,
-         * CoulombLaw::slip_linearisation()); 0 where the node does not
-         * slip. */
-        std::vector<double>                 slip_turning_stiffness;
-        std::vector<double>                 pressures;
-        std::vector<dealii::Tensor<1, dim>> tangential_tractions;
-      };
-
-      /** Active-set code of every node: status and, in 2D, the sense of
-       * the slip direction. Used to detect cycling. */
-      std::vector<int>
-      codes(const State &state) const;
-
-      /** Normal (MPa) and tangential (MPa) complementarity functions of
-       * node j, in the current state. */
-      std::pair<double, dealii::Tensor<1, dim>>
-      complementarity(const unsigned int j, const VectorType &u) const;
-
-      /** Part of @p x along the free tangent directions of node j. */
-      dealii::Tensor<1, dim>
-      free_tangential_part(const unsigned int            j,
-                           const dealii::Tensor<1, dim> &x) const;
-
-      /** Weighted violation of node j (N), to rank nodes when cycling. */
-      double
-      violation(const unsigned int j, const VectorType &u) const;
-
-      const ContactParameters             parameters;
-      const MortarCoupling<dim>          &coupling;
-      const double                        reference_modulus;
-      State                               state;
-      State                               accepted_state;
-      std::vector<dealii::Tensor<1, dim>> accepted_relative_displacement;
-      std::vector<dealii::Tensor<1, dim>> slip_accumulated;
-      std::vector<std::vector<int>>       history;
-      /** Orthonormal basis of the tangent directions along which each
-       * node may slip: the whole tangent plane (dim - 1 vectors) where no
-       * DoF is fixed, fewer where some are. */
-      std::vector<std::vector<dealii::Tensor<1, dim>>> free_tangents;
-      /** Nodes with at least one free DoF. */
-      std::vector<bool> normally_free;
-      bool              cycling;
-      bool              last_update_extrapolated;
-      bool              extrapolation_enabled;
+      const MortarCoupling<dim>                    &coupling;
+      FreeDirections<dim>                           directions;
+      ContactState<dim>                             contact_state;
+      const std::unique_ptr<NormalEnforcement<dim>> normal;
+      const std::unique_ptr<FrictionModel<dim>>     friction;
+      ActiveSetPolicy<dim>                          policy;
     };
   } // namespace Contact
 } // namespace Common

@@ -1,0 +1,162 @@
+/**
+ * @file active_set_policy.h
+ * The active-set update of the semismooth Newton (primal-dual active set)
+ * method and its safeguards: the initial active set, the normal rule of
+ * the enforcement followed by the stick/slip rule of the friction model,
+ * an extrapolated release of an oversized contact zone, and single-point
+ * changes when the set cycles. Also the norm of the complementarity
+ * functions that measures convergence, and the complementarity constants.
+ *
+ * The rule sees the nodes as plain data (NodeKinematics, ContactState) and
+ * the laws through their interfaces (NormalEnforcement, FrictionModel): it
+ * needs no mesh.
+ *
+ * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
+ * S. Hueeber, G. Stadler, B. Wohlmuth, SIAM J. Sci. Comput. 30 (2008)
+ * 572-596.
+ */
+#ifndef common_contact_active_set_policy_h
+#define common_contact_active_set_policy_h
+
+#include <common/contact/contact_parameters.h>
+#include <common/contact/contact_state.h>
+#include <common/contact/friction_model.h>
+#include <common/contact/mortar_coupling.h>
+#include <common/contact/normal_enforcement.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <utility>
+#include <vector>
+
+namespace Common
+{
+  namespace Contact
+  {
+    /**
+     * @brief Semismooth Newton active-set rule with its safeguards.
+     */
+    template <int dim>
+    class ActiveSetPolicy
+    {
+    public:
+      /**
+       * @param[in] parameters Contact parameters: the factors of the
+       * complementarity constants and "Accelerate active set release".
+       * @param[in] reference_modulus Young's modulus used to scale the
+       * complementarity constants (MPa).
+       */
+      ActiveSetPolicy(const ContactParameters &parameters,
+                      const double             reference_modulus);
+
+      /** @brief Normal complementarity constant \f$c_N E/h\f$ of a node
+       * with mesh size @p mesh_size (mm), in MPa/mm. */
+      double
+      ncp_constant(const double mesh_size) const;
+
+      /** @brief Tangential complementarity constant \f$c_T E/h\f$
+       * (MPa/mm), used in the stick/slip decision. */
+      double
+      tangential_ncp_constant(const double mesh_size) const;
+
+      /**
+       * @brief Start the active set from the geometry: nodes that touch
+       * (pointwise gap <= 1e-8 h) are closed, with
+       * FrictionModel::status_on_contact(). A body that only touches its
+       * partner is thereby held from the first iteration on, and the
+       * first linear system is not singular. If no touching node carries
+       * a multiplier (positive weight; e.g. a sphere that touches at the
+       * axis node of an axisymmetric Q2 mesh, which has no ring measure),
+       * the paired node of positive weight with the smallest gap closes
+       * too; the iteration opens it if it carries no pressure. Resets
+       * @p state (ContactState::reset()).
+       */
+      void
+      initialize(const std::vector<NodeKinematics<dim>> &nodes,
+                 const FrictionModel<dim>               &friction,
+                 ContactState<dim>                      &state) const;
+
+      /** @brief Forget the active-set history used to detect cycling and
+       * re-enable the extrapolation; call at the start of each load step. */
+      void
+      begin_step(const ContactState<dim> &state);
+
+      /**
+       * @brief Apply the active-set rule to every paired node: the normal
+       * rule NormalEnforcement::is_closed(), then for closed nodes the
+       * stick/slip rule FrictionModel::closed_status() with the normal
+       * pressure \f$\max(0, \lambda - c\,g)\f$ and the tangential constant.
+       *
+       * If the rule only opens points, the opened band is extrapolated
+       * (unless switched off): a closed node j is opened too if an opened
+       * node r lies within twice r's distance to the closed set. Near a
+       * smooth contact edge the pressure of an oversized zone of width b is
+       * negative over a band of about half the excess b - a, so mirroring
+       * the band about its inner end lands on the edge a. If a later
+       * iteration of the step must close points again, the extrapolation
+       * stays off for the rest of the step.
+       *
+       * If the rule returns to an active set seen earlier in the step
+       * (ping-pong between open and closed, or stick and slip), only the
+       * point with the largest complementarity violation is changed,
+       * choosing one that leads to an unseen set; is_cycling() reports the
+       * case where none exists.
+       * @param[in] nodes Kinematics of the nodes at the current iterate.
+       * @return Number of nodes whose status (or slip sense) changed.
+       */
+      unsigned int
+      update(const std::vector<NodeKinematics<dim>> &nodes,
+             const NormalEnforcement<dim>           &normal,
+             const FrictionModel<dim>               &friction,
+             ContactState<dim>                      &state);
+
+      /** @brief True if the last update could only return to an active
+       * set seen earlier in this step. */
+      bool
+      is_cycling() const;
+
+      /** @brief Norm of the normal and tangential complementarity
+       * functions weighted by D_j (N) over the paired nodes; zero without
+       * multipliers (penalty). */
+      double
+      complementarity_norm(const std::vector<NodeKinematics<dim>> &nodes,
+                           const NormalEnforcement<dim>           &normal,
+                           const FrictionModel<dim>               &friction,
+                           const ContactState<dim>                &state) const;
+
+      /** @brief True if a closed node of @p state neighbours (shares a
+       * face with) an unpaired node of positive weight: the contact zone
+       * has reached the edge of the search region. */
+      static bool
+      touches_search_edge(const MortarCoupling<dim> &coupling,
+                          const ContactState<dim>   &state);
+
+    private:
+      /** Active-set code of every node: status and, along a single free
+       * tangent, the sense of the slip direction. Used to detect cycling. */
+      std::vector<int>
+      codes(const ContactState<dim>           &state,
+            const std::vector<NodeState<dim>> &nodes) const;
+
+      /** Normal (MPa) and tangential (MPa) complementarity functions of
+       * node j. */
+      std::pair<double, dealii::Tensor<1, dim>>
+      complementarity(const unsigned int                      j,
+                      const std::vector<NodeKinematics<dim>> &nodes,
+                      const NormalEnforcement<dim>           &normal,
+                      const FrictionModel<dim>               &friction,
+                      const ContactState<dim>                &state) const;
+
+      const double                  ncp_factor;
+      const double                  tangential_ncp_factor;
+      const double                  reference_modulus;
+      const bool                    accelerate_release;
+      std::vector<std::vector<int>> history;
+      bool                          cycling;
+      bool                          last_update_extrapolated;
+      bool                          extrapolation_enabled;
+    };
+  } // namespace Contact
+} // namespace Common
+
+#endif
