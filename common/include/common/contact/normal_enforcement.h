@@ -133,6 +133,20 @@ namespace Common
 
 
     /**
+     * @brief Closed nodes whose constraints the last
+     * DualLagrangeEnforcement::add_constraints() could not set up in full.
+     */
+    struct ConstraintDiagnostics
+    {
+      /** Sticking nodes whose normal has no free component (a Dirichlet
+       * condition fixes their normal displacement): held along their free
+       * tangents only, the normal condition left to the support. */
+      unsigned int n_stick_without_normal = 0;
+    };
+
+
+
+    /**
      * @brief Condensed dual Lagrange multipliers: the affine constraints of
      * the closed nodes, and the multipliers recovered from the residual.
      */
@@ -167,7 +181,12 @@ namespace Common
        * displacement at the last accepted step: the whole node where no
        * component is fixed, the normal and its free tangent directions
        * (solved for its free components) where some are (a symmetry
-       * plane).
+       * plane). Where that system is singular because the normal has no
+       * free component (a Dirichlet condition fixes the normal
+       * displacement), the sticking node is held along its free tangents
+       * alone, so that it keeps its friction force; such nodes are
+       * counted (diagnostics()) and reported once on the standard error
+       * stream.
        */
       void
       add_constraints(
@@ -198,6 +217,16 @@ namespace Common
                        const VectorType          &bulk_residual,
                        const bool                 with_friction,
                        ContactState<dim>         &state) const override;
+
+      /** @brief Counts of the closed nodes that the last
+       * add_constraints() could not constrain in full. */
+      const ConstraintDiagnostics &
+      diagnostics() const;
+
+    private:
+      mutable ConstraintDiagnostics last_diagnostics;
+      /** True once a kind of ConstraintDiagnostics has been reported. */
+      mutable bool warned_stick = false;
     };
 
 
