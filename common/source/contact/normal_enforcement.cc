@@ -206,7 +206,8 @@ namespace Common
     {
       const FreeDirections<dim> &directions = state.directions();
       last_diagnostics                      = ConstraintDiagnostics();
-      unsigned int example_stick            = numbers::invalid_unsigned_int;
+      unsigned int example_stick            = numbers::invalid_unsigned_int,
+                   example_unconstrained    = numbers::invalid_unsigned_int;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const PointStatus status = state.node(j).status;
@@ -306,7 +307,14 @@ namespace Common
                 (c < 0 || std::abs(row.normal[d]) > std::abs(row.normal[c])))
               c = d;
           if (c < 0 || std::abs(row.normal[c]) < 1e-6)
-            continue;
+            {
+              // Every component fixed, or none along the normal: no
+              // constraint can act on the node.
+              ++last_diagnostics.n_unconstrained;
+              if (example_unconstrained == numbers::invalid_unsigned_int)
+                example_unconstrained = j;
+              continue;
+            }
 
           // n.(sum_k M_jk du_k - D du_j) = -g(u), solved for du_{j,c}.
           const double scale = 1. / (row.weight * row.normal[c]);
@@ -336,6 +344,17 @@ namespace Common
                ", have their normal displacement fixed by a Dirichlet "
                "condition: stick is held along the free tangents only, and "
                "the normal condition is left to the support.");
+        }
+      if (last_diagnostics.n_unconstrained > 0 && !warned_unconstrained)
+        {
+          warned_unconstrained = true;
+          warn(std::to_string(last_diagnostics.n_unconstrained) +
+               " closed contact node(s), the first at " +
+               position_text(coupling, example_unconstrained) +
+               ", take no contact constraint: every displacement component, "
+               "or every one along the normal, is fixed by other constraints "
+               "(Dirichlet conditions, a rigid-body tie). Their contact "
+               "condition is not enforced.");
         }
     }
 

@@ -142,6 +142,10 @@ namespace Common
        * condition fixes their normal displacement): held along their free
        * tangents only, the normal condition left to the support. */
       unsigned int n_stick_without_normal = 0;
+      /** Closed nodes on which no constraint can act: every component
+       * fixed, or every one along the normal while the node slips or has
+       * no free tangent. Their contact condition is not enforced. */
+      unsigned int n_unconstrained = 0;
     };
 
 
@@ -186,7 +190,8 @@ namespace Common
        * displacement), the sticking node is held along its free tangents
        * alone, so that it keeps its friction force; such nodes are
        * counted (diagnostics()) and reported once on the standard error
-       * stream.
+       * stream. So is a closed node on which no constraint can act (every
+       * component fixed, or every one along the normal while it slips).
        */
       void
       add_constraints(
@@ -226,7 +231,8 @@ namespace Common
     private:
       mutable ConstraintDiagnostics last_diagnostics;
       /** True once a kind of ConstraintDiagnostics has been reported. */
-      mutable bool warned_stick = false;
+      mutable bool warned_stick         = false;
+      mutable bool warned_unconstrained = false;
     };
 
 
