@@ -18,7 +18,8 @@
  * \f$t_j = -(I - n_j n_j^T) r_j / D_j\f$.
  *
  * Penalty (PenaltyEnforcement): a closed node is a spring of stiffness
- * epsilon D_j on its weighted gap, \f$\lambda_j = \epsilon\max(0, -g_j)\f$.
+ * epsilon D_j on its normal gap \f$g_j = \tilde g_j / D_j\f$,
+ * \f$\lambda_j = \epsilon\max(0, -g_j)\f$.
  *
  * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
  * A. Popp et al., IJNME 83 (2010) 1428-1465.
@@ -53,6 +54,7 @@ namespace Common
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
       using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
 
+      /** @brief Virtual destructor of the interface. */
       virtual ~NormalEnforcement() = default;
 
       /**
