@@ -1,4 +1,5 @@
 #include <common/contact/active_set_policy.h>
+#include <common/contact/contact_search.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -183,23 +184,36 @@ namespace Common
               opened.push_back(j);
             else if (next[j])
               kept.push_back(j);
-          // Distance of each opened node to the closed set.
-          std::vector<double> band(opened.size(),
-                                   std::numeric_limits<double>::max());
-          for (unsigned int r = 0; r < opened.size(); ++r)
-            for (const unsigned int j : kept)
-              band[r] =
-                std::min(band[r],
-                         nodes[opened[r]].position.distance(nodes[j].position));
           std::vector<unsigned int> also_opened;
-          for (const unsigned int j : kept)
-            for (unsigned int r = 0; r < opened.size(); ++r)
-              if (nodes[j].position.distance(nodes[opened[r]].position) <
-                  2. * band[r] * (1. - 1e-10))
+          if (!kept.empty())
+            {
+              // Nearest-point queries on an R-tree of the closed set
+              // (NearestPoints): O(n log n), not a loop over all pairs.
+              std::vector<Point<dim>> positions(n);
+              for (unsigned int j = 0; j < n; ++j)
+                positions[j] = nodes[j].position;
+              NearestPoints<dim> closed_set(positions, kept);
+              // Distance of each opened node to the closed set.
+              std::vector<double> band(opened.size());
+              for (unsigned int r = 0; r < opened.size(); ++r)
+                band[r] = positions[opened[r]].distance(
+                  positions[closed_set.nearest(positions[opened[r]])]);
+              // The closed nodes within twice an opened node's band: the
+              // nearest remaining one while it lies inside, each taken out
+              // of the tree once found.
+              for (unsigned int r = 0; r < opened.size(); ++r)
                 {
-                  also_opened.push_back(j);
-                  break;
+                  const Point<dim> &x = positions[opened[r]];
+                  for (unsigned int j = closed_set.nearest(x);
+                       j != numbers::invalid_unsigned_int &&
+                       positions[j].distance(x) < 2. * band[r] * (1. - 1e-10);
+                       j = closed_set.nearest(x))
+                    {
+                      also_opened.push_back(j);
+                      closed_set.remove(j);
+                    }
                 }
+            }
           // Never open the whole zone: keep the plain step then.
           if (!kept.empty() && also_opened.size() < kept.size())
             {

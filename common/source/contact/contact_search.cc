@@ -2,6 +2,9 @@
 
 #include <deal.II/base/tensor.h>
 
+// The equality of points, which rtree::remove() needs.
+#include <boost/geometry/algorithms/equals.hpp>
+
 namespace Common
 {
   namespace Contact
@@ -184,9 +187,58 @@ namespace Common
       return solve_projection<dim>(evaluate, y);
     }
 
+    template <int dim>
+    NearestPoints<dim>::NearestPoints(const std::vector<Point<dim>>   &points,
+                                      const std::vector<unsigned int> &indices)
+      : points(points)
+    {
+      std::vector<std::pair<Point<dim>, unsigned int>> entries;
+      entries.reserve(indices.size());
+      for (const unsigned int i : indices)
+        entries.emplace_back(points[i], i);
+      tree = pack_rtree(entries);
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    NearestPoints<dim>::nearest(const Point<dim>  &x,
+                                const unsigned int excluded) const
+    {
+      // Two candidates, in case one is the excluded index.
+      std::vector<std::pair<Point<dim>, unsigned int>> hits;
+      tree.query(boost::geometry::index::nearest(x, 2),
+                 std::back_inserter(hits));
+      unsigned int result   = numbers::invalid_unsigned_int;
+      double       distance = 0.;
+      for (const auto &[point, i] : hits)
+        if (i != excluded && (result == numbers::invalid_unsigned_int ||
+                              x.distance(point) < distance))
+          {
+            result   = i;
+            distance = x.distance(point);
+          }
+      return result;
+    }
+
+
+
+    template <int dim>
+    void
+    NearestPoints<dim>::remove(const unsigned int i)
+    {
+      const std::size_t n_removed = tree.remove(std::make_pair(points[i], i));
+      (void)n_removed;
+      Assert(n_removed == 1, ExcInternalError());
+    }
+
+
     template struct Projection<2>;
     template struct Projection<3>;
     template class ContactSearch<2>;
     template class ContactSearch<3>;
+    template class NearestPoints<2>;
+    template class NearestPoints<3>;
   } // namespace Contact
 } // namespace Common

@@ -1,7 +1,9 @@
+#include <common/contact/contact_search.h>
 #include <common/contact/contact_state.h>
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 namespace Common
 {
@@ -162,6 +164,46 @@ namespace Common
     {
       const unsigned int n = n_nodes();
       AssertDimension(nodes.size(), n);
+
+      // A node that closed during the step needs the distances to the
+      // nearest other paired node, to the nearest one closed at the start
+      // and to the nearest one open at the end of the step: one R-tree
+      // query each (NearestPoints), not a loop over all nodes.
+      std::vector<Point<dim>>   positions(n);
+      std::vector<unsigned int> paired, closed_at_start, open_at_end;
+      bool                      any_closing = false;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          positions[j] = nodes[j].position;
+          any_closing =
+            any_closing || (current[j].status != PointStatus::open &&
+                            accepted[j].status == PointStatus::open);
+          if (!nodes[j].paired)
+            continue;
+          paired.push_back(j);
+          if (accepted[j].status != PointStatus::open)
+            closed_at_start.push_back(j);
+          if (current[j].status == PointStatus::open)
+            open_at_end.push_back(j);
+        }
+      std::unique_ptr<NearestPoints<dim>> near_paired, near_closed, near_open;
+      if (any_closing)
+        {
+          near_paired = std::make_unique<NearestPoints<dim>>(positions, paired);
+          near_closed =
+            std::make_unique<NearestPoints<dim>>(positions, closed_at_start);
+          near_open =
+            std::make_unique<NearestPoints<dim>>(positions, open_at_end);
+        }
+      // Distance from node j to the nearest other node of a set.
+      const auto distance_to = [&positions](const NearestPoints<dim> &set,
+                                            const unsigned int        j) {
+        const unsigned int i = set.nearest(positions[j], j);
+        return i == numbers::invalid_unsigned_int ?
+                 std::numeric_limits<double>::max() :
+                 positions[j].distance(positions[i]);
+      };
+
       for (unsigned int j = 0; j < n; ++j)
         {
           const Tensor<1, dim> &relative = nodes[j].relative_displacement;
@@ -175,20 +217,9 @@ namespace Common
                   // after the contact edge passed the node, with the edge
                   // midway between the last closed and first open nodes at
                   // the start (old) and end (new) of the step.
-                  const Point<dim> &x     = nodes[j].position;
-                  double            d_old = std::numeric_limits<double>::max();
-                  double            d_new = d_old, spacing = d_old;
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      if (i == j || !nodes[i].paired)
-                        continue;
-                      const double d = x.distance(nodes[i].position);
-                      spacing        = std::min(spacing, d);
-                      if (accepted[i].status != PointStatus::open)
-                        d_old = std::min(d_old, d);
-                      if (current[i].status == PointStatus::open)
-                        d_new = std::min(d_new, d);
-                    }
+                  const double spacing = distance_to(*near_paired, j);
+                  const double d_old   = distance_to(*near_closed, j);
+                  const double d_new   = distance_to(*near_open, j);
                   if (d_old < std::numeric_limits<double>::max() &&
                       d_new < std::numeric_limits<double>::max() &&
                       d_old + d_new > spacing)

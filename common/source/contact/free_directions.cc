@@ -70,11 +70,9 @@ namespace Common
       // plane minus the span of the fixed unit vectors' tangential parts
       // (Gram-Schmidt).
       std::vector<Tensor<1, dim>> fixed_tangential;
-      unsigned int                n_fixed = 0;
       for (unsigned int d = 0; d < dim; ++d)
         if (fixed[d])
           {
-            ++n_fixed;
             Tensor<1, dim> w = unit_vector<dim>(d);
             w                = w - (w * n) * n;
             for (const auto &q : fixed_tangential)
@@ -92,8 +90,14 @@ namespace Common
           if (b.norm() > 1e-8)
             free.push_back(b / b.norm());
         }
-      tangents[j]      = free;
-      free_normally[j] = (n_fixed < dim);
+      tangents[j] = free;
+      // A normal condition acts on the node's own displacement through a
+      // free component with a share of the normal (the threshold of
+      // DualLagrangeEnforcement::add_constraints()).
+      free_normally[j] = false;
+      for (unsigned int d = 0; d < dim; ++d)
+        free_normally[j] =
+          free_normally[j] || (!fixed[d] && std::abs(n[d]) >= 1e-6);
     }
 
 

@@ -2,9 +2,15 @@
 #include <common/contact/normal_contact_law.h>
 #include <common/contact/normal_enforcement.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,6 +19,150 @@ namespace Common
   namespace Contact
   {
     using namespace dealii;
+
+    namespace
+    {
+      /**
+       * Hold secondary node j by the rows of @p A (m x dim, orthonormal
+       * directions): A du_j = A (sum_k M_jk du_k / D + target_defect),
+       * solved for the m components @p solved of du_j, the increments of
+       * the @p other components moving to the right-hand side,
+       * du_S = S (sum_k M_jk du_k / D + target_defect) - S_X du_X with
+       * S = A_S^-1 A. Adds nothing and returns false if
+       * |det A_S| <= 1e-6.
+       */
+      template <int dim>
+      bool
+      hold_node(const MortarCoupling<dim>       &coupling,
+                const unsigned int               j,
+                const FullMatrix<double>        &A,
+                const std::vector<unsigned int> &solved,
+                const std::vector<unsigned int> &other,
+                const Tensor<1, dim>            &target_defect,
+                AffineConstraints<double>       &constraints)
+      {
+        const MortarRow<dim> &row  = coupling.row(j);
+        const auto           &node = coupling.secondary_surface().node(j);
+        const unsigned int    m    = solved.size();
+        FullMatrix<double>    A_S(m, m), A_S_inverse(m, m);
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int f = 0; f < m; ++f)
+            A_S(i, f) = A(i, solved[f]);
+        if (!(std::abs(A_S.determinant()) > 1e-6))
+          return false;
+        A_S_inverse.invert(A_S);
+        FullMatrix<double> S(m, dim); // A_S^-1 A
+        A_S_inverse.mmult(S, A);
+        for (unsigned int f = 0; f < m; ++f)
+          {
+            std::vector<std::pair<types::global_dof_index, double>> entries;
+            double inhomogeneity = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                inhomogeneity += S(f, d) * target_defect[d];
+                if (std::abs(S(f, d)) < 1e-14)
+                  continue;
+                for (const auto &[k, M] : row.primary_weights)
+                  if (std::abs(M) > 1e-14 * row.weight)
+                    entries.emplace_back(coupling.primary_node(k).dofs[d],
+                                         S(f, d) * M / row.weight);
+              }
+            for (const unsigned int x : other)
+              if (std::abs(S(f, x)) > 1e-14)
+                entries.emplace_back(node.dofs[x], -S(f, x));
+            const auto dof = node.dofs[solved[f]];
+            constraints.add_line(dof);
+            constraints.add_entries(dof, entries);
+            constraints.set_inhomogeneity(dof, inhomogeneity);
+          }
+        return true;
+      }
+
+
+
+      /**
+       * Hold secondary node j along its free tangents alone (hold_node()
+       * with A = the free tangents), solved for as many of its free
+       * components as there are tangents: the choice with the largest
+       * |det A_S|. False if there is none.
+       */
+      template <int dim>
+      bool
+      hold_free_tangents(const MortarCoupling<dim>         &coupling,
+                         const unsigned int                 j,
+                         const std::vector<Tensor<1, dim>> &free_tangents,
+                         const std::vector<unsigned int>   &free_components,
+                         const std::vector<unsigned int>   &fixed_components,
+                         const Tensor<1, dim>              &target_defect,
+                         AffineConstraints<double>         &constraints)
+      {
+        const unsigned int k = free_tangents.size();
+        FullMatrix<double> A(k, dim);
+        for (unsigned int i = 0; i < k; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            A(i, d) = free_tangents[i][d];
+        std::vector<unsigned int> best;
+        double                    best_determinant = 0.;
+        // Every subset of k free components (there are at most dim).
+        for (unsigned int mask = 0; mask < (1u << free_components.size());
+             ++mask)
+          {
+            std::vector<unsigned int> solved;
+            for (unsigned int f = 0; f < free_components.size(); ++f)
+              if (mask & (1u << f))
+                solved.push_back(free_components[f]);
+            if (solved.size() != k)
+              continue;
+            FullMatrix<double> A_S(k, k);
+            for (unsigned int i = 0; i < k; ++i)
+              for (unsigned int f = 0; f < k; ++f)
+                A_S(i, f) = A(i, solved[f]);
+            const double determinant = std::abs(A_S.determinant());
+            if (determinant > best_determinant)
+              {
+                best             = solved;
+                best_determinant = determinant;
+              }
+          }
+        if (best.empty())
+          return false;
+        std::vector<unsigned int> other = fixed_components;
+        for (const unsigned int f : free_components)
+          if (std::find(best.begin(), best.end(), f) == best.end())
+            other.push_back(f);
+        return hold_node(coupling,
+                         j,
+                         A,
+                         best,
+                         other,
+                         target_defect,
+                         constraints);
+      }
+
+
+
+      /** "(x, y)" or "(x, y, z)": the position of secondary node j (mm). */
+      template <int dim>
+      std::string
+      position_text(const MortarCoupling<dim> &coupling, const unsigned int j)
+      {
+        std::ostringstream text;
+        text << '(' << coupling.secondary_surface().node(j).position << ')';
+        return text.str();
+      }
+
+
+
+      /** One line on the standard error stream, from the first rank. */
+      void
+      warn(const std::string &text)
+      {
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::cerr << "Warning: " << text << std::endl;
+      }
+    } // namespace
+
+
 
     template <int dim>
     bool
@@ -54,6 +204,9 @@ namespace Common
       AffineConstraints<double> &constraints) const
     {
       const FreeDirections<dim> &directions = state.directions();
+      last_diagnostics                      = ConstraintDiagnostics();
+      unsigned int example_stick            = numbers::invalid_unsigned_int,
+                   example_unconstrained    = numbers::invalid_unsigned_int;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const PointStatus status = state.node(j).status;
@@ -92,60 +245,53 @@ namespace Common
               continue;
             }
 
-          // A stick node with some DoFs fixed (a symmetry plane): the
-          // normal condition and stick along the free tangents, A du_j =
-          // A (sum_k M_jk du_k / D + target_defect) with the rows of A the
-          // normal and the free tangents, solved for the free components F:
-          // du_F = A_F^-1 (A (sum_k M_jk du_k / D + target_defect) - A_X
-          // du_X).
           std::vector<unsigned int> free_components, fixed_components;
           for (unsigned int d = 0; d < dim; ++d)
             (constraints.is_constrained(node.dofs[d]) ? fixed_components :
                                                         free_components)
               .push_back(d);
-          const unsigned int m = 1 + free_tangents.size();
-          if (status == PointStatus::stick && !free_tangents.empty() &&
-              free_components.size() == m)
+          if (status == PointStatus::stick && !free_tangents.empty())
             {
-              FullMatrix<double> A(m, dim), A_F(m, m), A_F_inverse(m, m);
-              for (unsigned int d = 0; d < dim; ++d)
+              // A stick node with some DoFs fixed (a symmetry plane): the
+              // normal condition and stick along the free tangents, solved
+              // for the free components.
+              const unsigned int m = 1 + free_tangents.size();
+              if (free_components.size() == m)
                 {
-                  A(0, d) = row.normal[d];
-                  for (unsigned int i = 1; i < m; ++i)
-                    A(i, d) = free_tangents[i - 1][d];
-                }
-              for (unsigned int i = 0; i < m; ++i)
-                for (unsigned int f = 0; f < m; ++f)
-                  A_F(i, f) = A(i, free_components[f]);
-              if (std::abs(A_F.determinant()) > 1e-6)
-                {
-                  A_F_inverse.invert(A_F);
-                  FullMatrix<double> S(m, dim); // A_F^-1 A
-                  A_F_inverse.mmult(S, A);
-                  for (unsigned int f = 0; f < m; ++f)
+                  FullMatrix<double> A(m, dim);
+                  for (unsigned int d = 0; d < dim; ++d)
                     {
-                      std::vector<std::pair<types::global_dof_index, double>>
-                             entries;
-                      double inhomogeneity = 0.;
-                      for (unsigned int d = 0; d < dim; ++d)
-                        {
-                          inhomogeneity += S(f, d) * target_defect[d];
-                          if (std::abs(S(f, d)) < 1e-14)
-                            continue;
-                          for (const auto &[k, M] : row.primary_weights)
-                            if (std::abs(M) > 1e-14 * row.weight)
-                              entries.emplace_back(
-                                coupling.primary_node(k).dofs[d],
-                                S(f, d) * M / row.weight);
-                        }
-                      for (const unsigned int x : fixed_components)
-                        if (std::abs(S(f, x)) > 1e-14)
-                          entries.emplace_back(node.dofs[x], -S(f, x));
-                      const auto dof = node.dofs[free_components[f]];
-                      constraints.add_line(dof);
-                      constraints.add_entries(dof, entries);
-                      constraints.set_inhomogeneity(dof, inhomogeneity);
+                      A(0, d) = row.normal[d];
+                      for (unsigned int i = 1; i < m; ++i)
+                        A(i, d) = free_tangents[i - 1][d];
                     }
+                  if (hold_node(coupling,
+                                j,
+                                A,
+                                free_components,
+                                fixed_components,
+                                target_defect,
+                                constraints))
+                    continue;
+                }
+              // That system is singular (or not square) where the normal
+              // has no free component: the Dirichlet conditions fix the
+              // node's normal displacement, and its normal condition
+              // cannot act on the node. Its stick condition can: hold it
+              // along the free tangents alone, solved for the free
+              // components that give the best-conditioned system, rather
+              // than lose its friction force.
+              if (hold_free_tangents(coupling,
+                                     j,
+                                     free_tangents,
+                                     free_components,
+                                     fixed_components,
+                                     target_defect,
+                                     constraints))
+                {
+                  ++last_diagnostics.n_stick_without_normal;
+                  if (example_stick == numbers::invalid_unsigned_int)
+                    example_stick = j;
                   continue;
                 }
             }
@@ -159,7 +305,14 @@ namespace Common
                 (c < 0 || std::abs(row.normal[d]) > std::abs(row.normal[c])))
               c = d;
           if (c < 0 || std::abs(row.normal[c]) < 1e-6)
-            continue;
+            {
+              // Every component fixed, or none along the normal: no
+              // constraint can act on the node.
+              ++last_diagnostics.n_unconstrained;
+              if (example_unconstrained == numbers::invalid_unsigned_int)
+                example_unconstrained = j;
+              continue;
+            }
 
           // n.(sum_k M_jk du_k - D du_j) = -g(u), solved for du_{j,c}.
           const double scale = 1. / (row.weight * row.normal[c]);
@@ -179,6 +332,37 @@ namespace Common
           constraints.set_inhomogeneity(node.dofs[c],
                                         coupling.weighted_gap(j, u) * scale);
         }
+
+      if (last_diagnostics.n_stick_without_normal > 0 && !warned_stick)
+        {
+          warned_stick = true;
+          warn(std::to_string(last_diagnostics.n_stick_without_normal) +
+               " sticking contact node(s), the first at " +
+               position_text(coupling, example_stick) +
+               ", have their normal displacement fixed by a Dirichlet "
+               "condition: stick is held along the free tangents only, and "
+               "the normal condition is left to the support.");
+        }
+      if (last_diagnostics.n_unconstrained > 0 && !warned_unconstrained)
+        {
+          warned_unconstrained = true;
+          warn(std::to_string(last_diagnostics.n_unconstrained) +
+               " closed contact node(s), the first at " +
+               position_text(coupling, example_unconstrained) +
+               ", take no contact constraint: every displacement component, "
+               "or every one along the normal, is fixed by other constraints "
+               "(Dirichlet conditions, a rigid-body tie). Their contact "
+               "condition is not enforced.");
+        }
+    }
+
+
+
+    template <int dim>
+    const ConstraintDiagnostics &
+    DualLagrangeEnforcement<dim>::diagnostics() const
+    {
+      return last_diagnostics;
     }
 
 

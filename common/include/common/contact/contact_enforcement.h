@@ -109,8 +109,12 @@ namespace Common
        * fixed DoFs: on a symmetry plane of a 3D model, along the line
        * where plane and contact surface meet; a node without such a
        * direction (on an axis, or with every DoF fixed) counts as sticking
-       * when closed, and one with every DoF fixed cannot take the normal
-       * condition either. Call once, after the constructor.
+       * when closed. A node whose fixed DoFs hold its normal (every DoF
+       * fixed, or a support along the normal) cannot take the normal
+       * condition: its normal complementarity does not count, and while
+       * it sticks it is held along its free tangents alone
+       * (DualLagrangeEnforcement::add_constraints()). Call once, after
+       * the constructor.
        */
       void
       mark_constrained_nodes(

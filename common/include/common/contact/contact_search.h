@@ -2,7 +2,8 @@
  * @file contact_search.h
  * Geometry only: an R-tree over the bounding boxes of the faces of a
  * contact surface, and projections of points onto faces along a given
- * direction. No constitutive, penalty or multiplier information.
+ * direction; nearest-point queries over a set of points (contact nodes).
+ * No constitutive, penalty or multiplier information.
  */
 #ifndef common_contact_contact_search_h
 #define common_contact_contact_search_h
@@ -10,6 +11,8 @@
 #include <common/contact/contact_surface.h>
 
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/point.h>
 #include <deal.II/numerics/rtree.h>
 
 #include <utility>
@@ -88,6 +91,41 @@ namespace Common
       const double                                                     margin;
       std::vector<std::pair<dealii::BoundingBox<dim>, unsigned int>>   boxes;
       dealii::RTree<std::pair<dealii::BoundingBox<dim>, unsigned int>> tree;
+    };
+
+    /**
+     * @brief Nearest-point queries over a set of indexed points (an R-tree
+     * of the points), with removal: O(log n) per query instead of a loop
+     * over all points. The nearest point is the one of smallest
+     * dealii::Point::distance(): the tree compares the same sums of
+     * squares.
+     */
+    template <int dim>
+    class NearestPoints
+    {
+    public:
+      /**
+       * @param[in] points Position of every index (mm).
+       * @param[in] indices The indices in the set.
+       */
+      NearestPoints(const std::vector<dealii::Point<dim>> &points,
+                    const std::vector<unsigned int>       &indices);
+
+      /** @brief The index in the set, other than @p excluded, whose point
+       * lies nearest to @p x; numbers::invalid_unsigned_int if there is
+       * none. */
+      unsigned int
+      nearest(const dealii::Point<dim> &x,
+              const unsigned int        excluded =
+                dealii::numbers::invalid_unsigned_int) const;
+
+      /** @brief Remove index @p i (which must be in the set). */
+      void
+      remove(const unsigned int i);
+
+    private:
+      const std::vector<dealii::Point<dim>>                      points;
+      dealii::RTree<std::pair<dealii::Point<dim>, unsigned int>> tree;
     };
   } // namespace Contact
 } // namespace Common

@@ -57,8 +57,10 @@ namespace Common
        * @p fixed[d] is true. The free tangents become the tangent
        * directions w with w_d = 0 for every fixed d: the tangent plane less
        * the span of the fixed unit vectors' tangential parts
-       * (Gram-Schmidt); a node with every component fixed is not normally
-       * free.
+       * (Gram-Schmidt). The node is normally free if a free component
+       * carries a share of at least 1e-6 of its normal; not where every
+       * component is fixed, nor where the fixed ones hold the normal (a
+       * support along the normal).
        */
       void
       fix_components(const unsigned int j, const std::array<bool, dim> &fixed);
@@ -88,8 +90,9 @@ namespace Common
       const std::vector<dealii::Tensor<1, dim>> &
       free_tangents(const unsigned int j) const;
 
-      /** @brief True if node @p j has at least one free component, so
-       * that a normal condition can act on it. */
+      /** @brief True if a free component of node @p j carries a share
+       * of its normal (at least 1e-6), so that a normal condition can act
+       * on the node's own displacement. */
       bool
       normally_free(const unsigned int j) const;
 

@@ -90,6 +90,7 @@ namespace Common
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
       using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
 
+      /** @brief Virtual destructor of the interface. */
       virtual ~FrictionModel() = default;
 
       /** @brief True if the law can produce a tangential traction (and
@@ -207,8 +208,8 @@ namespace Common
        * \f$s = \mu p\f$ (p = @p point.normal_pressure); a node without a
        * free tangent sticks. A slipping node takes the direction and the
        * turning stiffness of CoulombLaw::slip_linearisation(), the latter
-       * only if it may turn in the whole tangent plane (3D, no fixed
-       * component) and bounded by 1e3 c, so that a node just past the
+       * only if no tangent direction of the node is fixed (it acts in 3D
+       * only) and bounded by 1e3 c, so that a node just past the
        * stick limit does not make the tangent ill-conditioned (the
        * converged state does not depend on it).
        */

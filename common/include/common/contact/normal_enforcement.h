@@ -18,7 +18,8 @@
  * \f$t_j = -(I - n_j n_j^T) r_j / D_j\f$.
  *
  * Penalty (PenaltyEnforcement): a closed node is a spring of stiffness
- * epsilon D_j on its weighted gap, \f$\lambda_j = \epsilon\max(0, -g_j)\f$.
+ * epsilon D_j on its normal gap \f$g_j = \tilde g_j / D_j\f$,
+ * \f$\lambda_j = \epsilon\max(0, -g_j)\f$.
  *
  * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
  * A. Popp et al., IJNME 83 (2010) 1428-1465.
@@ -53,6 +54,7 @@ namespace Common
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
       using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
 
+      /** @brief Virtual destructor of the interface. */
       virtual ~NormalEnforcement() = default;
 
       /**
@@ -133,6 +135,24 @@ namespace Common
 
 
     /**
+     * @brief Closed nodes whose constraints the last
+     * DualLagrangeEnforcement::add_constraints() could not set up in full.
+     */
+    struct ConstraintDiagnostics
+    {
+      /** Sticking nodes whose normal has no free component (a Dirichlet
+       * condition fixes their normal displacement): held along their free
+       * tangents only, the normal condition left to the support. */
+      unsigned int n_stick_without_normal = 0;
+      /** Closed nodes on which no constraint can act: every component
+       * fixed, or every one along the normal while the node slips or has
+       * no free tangent. Their contact condition is not enforced. */
+      unsigned int n_unconstrained = 0;
+    };
+
+
+
+    /**
      * @brief Condensed dual Lagrange multipliers: the affine constraints of
      * the closed nodes, and the multipliers recovered from the residual.
      */
@@ -167,7 +187,13 @@ namespace Common
        * displacement at the last accepted step: the whole node where no
        * component is fixed, the normal and its free tangent directions
        * (solved for its free components) where some are (a symmetry
-       * plane).
+       * plane). Where that system is singular because the normal has no
+       * free component (a Dirichlet condition fixes the normal
+       * displacement), the sticking node is held along its free tangents
+       * alone, so that it keeps its friction force; such nodes are
+       * counted (diagnostics()) and reported once on the standard error
+       * stream. So is a closed node on which no constraint can act (every
+       * component fixed, or every one along the normal while it slips).
        */
       void
       add_constraints(
@@ -198,6 +224,17 @@ namespace Common
                        const VectorType          &bulk_residual,
                        const bool                 with_friction,
                        ContactState<dim>         &state) const override;
+
+      /** @brief Counts of the closed nodes that the last
+       * add_constraints() could not constrain in full. */
+      const ConstraintDiagnostics &
+      diagnostics() const;
+
+    private:
+      mutable ConstraintDiagnostics last_diagnostics;
+      /** True once a kind of ConstraintDiagnostics has been reported. */
+      mutable bool warned_stick         = false;
+      mutable bool warned_unconstrained = false;
     };
 
 
