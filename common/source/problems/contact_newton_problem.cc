@@ -45,36 +45,26 @@ namespace Common
     ContactNewtonProblem<dim>::setup(
       const AffineConstraints<double> &base_constraints)
     {
-      locally_owned_dofs    = dof_handler.locally_owned_dofs();
-      locally_relevant_dofs = complete_index_set(dof_handler.n_dofs());
-      constraints_dirichlet_and_hanging_nodes.clear();
-      constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
-      constraints_dirichlet_and_hanging_nodes.merge(base_constraints);
-      constraints_dirichlet_and_hanging_nodes.close();
-
-      solution.reinit(locally_owned_dofs,
-                      locally_relevant_dofs,
-                      mpi_communicator);
-      solution_owned.reinit(locally_owned_dofs, mpi_communicator);
-      accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
-      newton_update.reinit(locally_owned_dofs, mpi_communicator);
-      system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-      residual_vector.reinit(locally_owned_dofs,
-                             locally_relevant_dofs,
-                             mpi_communicator);
+      locally_owned_dofs     = dof_handler.locally_owned_dofs();
+      this->base_constraints = &base_constraints;
 
       const auto   start     = std::chrono::steady_clock::now();
       const double cpu_start = IO::process_cpu_seconds();
-      geometry.reinit(constraints_dirichlet_and_hanging_nodes);
+      geometry.reinit(base_constraints);
       contact_enforcement =
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            geometry.coupling(),
                                                            reference_modulus);
-      contact_enforcement->mark_constrained_nodes(
-        constraints_dirichlet_and_hanging_nodes);
+      contact_enforcement->mark_constrained_nodes(base_constraints);
       contact_enforcement->initialize_active_set();
       solve_times.contact_setup = IO::seconds_since(start);
       solve_times.contact_cpu   = IO::process_cpu_seconds() - cpu_start;
+
+      solution_owned.reinit(locally_owned_dofs, mpi_communicator);
+      accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
+      newton_update.reinit(locally_owned_dofs, mpi_communicator);
+      system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+      setup_stored_dofs(base_constraints);
 
       setup_matrices();
       linear_solver.reset();
@@ -85,6 +75,77 @@ namespace Common
                                     solid_operator.kinematics() !=
                                       Physics::Kinematics::axisymmetric),
           dim);
+    }
+
+
+
+    // The DoFs this rank reads: those of its own cells (owned ones and the
+    // partition interface; the shared triangulation makes every other cell
+    // a ghost, so deal.II's locally relevant set would be every DoF), the
+    // DoFs of the contact pair
+    // (every rank evaluates every mortar row, so that all decide the
+    // active set alike) and the DoFs that the constraints of those lines
+    // refer to (a rigid body's reference node). Nothing else is ghosted.
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::setup_stored_dofs(
+      const AffineConstraints<double> &base_constraints)
+    {
+      const IndexSet partition_relevant =
+        DoFTools::extract_locally_active_dofs(dof_handler);
+      IndexSet contact_dofs(dof_handler.n_dofs());
+      {
+        const auto                          &coupling = geometry.coupling();
+        std::vector<types::global_dof_index> dofs;
+        for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+          for (const auto dof : coupling.secondary_surface().node(j).dofs)
+            dofs.push_back(dof);
+        for (unsigned int k = 0; k < coupling.n_primary_nodes(); ++k)
+          for (const auto dof : coupling.primary_node(k).dofs)
+            dofs.push_back(dof);
+        std::sort(dofs.begin(), dofs.end());
+        contact_dofs.add_indices(dofs.begin(), dofs.end());
+      }
+      IndexSet relevant = partition_relevant;
+      relevant.add_indices(contact_dofs);
+      {
+        std::vector<types::global_dof_index> targets;
+        for (const auto &line : base_constraints.get_lines())
+          if (relevant.is_element(line.index))
+            for (const auto &entry : line.entries)
+              targets.push_back(entry.first);
+        std::sort(targets.begin(), targets.end());
+        relevant.add_indices(targets.begin(), targets.end());
+      }
+      relevant.compress();
+
+      stored_dof_counts.n_owned = locally_owned_dofs.n_elements();
+      stored_dof_counts.n_partition_ghosts =
+        partition_relevant.n_elements() - stored_dof_counts.n_owned;
+      stored_dof_counts.n_contact_ghosts =
+        relevant.n_elements() - partition_relevant.n_elements();
+
+      locally_relevant_dofs = relevant;
+      constraints_dirichlet_and_hanging_nodes.clear();
+      constraints_dirichlet_and_hanging_nodes.reinit(locally_relevant_dofs);
+      for (const auto &line : base_constraints.get_lines())
+        if (locally_relevant_dofs.is_element(line.index))
+          {
+            constraints_dirichlet_and_hanging_nodes.add_line(line.index);
+            constraints_dirichlet_and_hanging_nodes.add_entries(line.index,
+                                                                line.entries);
+            constraints_dirichlet_and_hanging_nodes
+              .set_inhomogeneity(line.index, line.inhomogeneity);
+          }
+      constraints_dirichlet_and_hanging_nodes.close();
+
+      solution.reinit(locally_owned_dofs,
+                      locally_relevant_dofs,
+                      mpi_communicator);
+      solution = solution_owned;
+      residual_vector.reinit(locally_owned_dofs,
+                             locally_relevant_dofs,
+                             mpi_communicator);
     }
 
 
@@ -157,7 +218,10 @@ namespace Common
     {
       const auto start = std::chrono::steady_clock::now();
       if (geometry.update(solution))
-        setup_matrices();
+        {
+          setup_stored_dofs(*base_constraints);
+          setup_matrices();
+        }
       if (contact_enforcement->has_friction())
         {
           assemble_bulk_matrix();
@@ -172,6 +236,9 @@ namespace Common
           load.prescribed_displacements(state, values);
           for (const auto &[dof, value] : values)
             {
+              // Each rank holds the constraints of its stored DoFs only.
+              if (!locally_relevant_dofs.is_element(dof))
+                continue;
               AssertThrow(constraints.is_constrained(dof),
                           ExcMessage("A prescribed displacement acts on a "
                                      "DoF without a Dirichlet constraint."));
@@ -432,6 +499,15 @@ namespace Common
     ContactNewtonProblem<dim>::secondary_surface() const
     {
       return geometry.coupling().secondary_surface();
+    }
+
+
+
+    template <int dim>
+    const StoredDoFs &
+    ContactNewtonProblem<dim>::stored_dofs() const
+    {
+      return stored_dof_counts;
     }
 
 

@@ -4,7 +4,10 @@
 #include <common/io/timer.h>
 #include <common/problems/contact_run.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <fstream>
 #include <iomanip>
@@ -103,6 +106,24 @@ namespace Common
                        << " secondary nodes, " << n_paired << " paired, "
                        << problem.enforcement().n_active()
                        << " initially closed" << std::endl;
+      // The DoFs each rank stores: its own plus the ghosts of the
+      // partition interface and of the contact interface, never all.
+      const MPI_Comm communicator = dof_handler.get_communicator();
+      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+        {
+          const auto &stored = problem.stored_dofs();
+          const auto  all =
+            Utilities::MPI::gather(communicator,
+                                   std::array<types::global_dof_index, 3>{
+                                     {stored.n_owned,
+                                      stored.n_partition_ghosts,
+                                      stored.n_contact_ghosts}});
+          for (unsigned int r = 0; r < all.size(); ++r)
+            console.stream()
+              << "DoFs stored on rank " << r << ": " << all[r][0] << " owned + "
+              << all[r][1] << " partition ghosts + " << all[r][2]
+              << " contact ghosts" << std::endl;
+        }
     }
 
 

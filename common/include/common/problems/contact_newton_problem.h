@@ -78,6 +78,23 @@ namespace Common
     };
 
     /**
+     * @brief The DoFs one rank stores in its ghosted vectors and
+     * constraints: owned ones plus ghosts.
+     */
+    struct StoredDoFs
+    {
+      /** DoFs the rank owns. */
+      dealii::types::global_dof_index n_owned = 0;
+      /** Ghosts on the rank's own cells (the partition interface). */
+      dealii::types::global_dof_index n_partition_ghosts = 0;
+      /** Further ghosts: DoFs of the contact pair and the DoFs their
+       * constraints refer to (the contact interface). */
+      dealii::types::global_dof_index n_contact_ghosts = 0;
+    };
+
+
+
+    /**
      * @brief A solid with one contact pair, solved by the semismooth
      * Newton method.
      */
@@ -111,7 +128,10 @@ namespace Common
        * @brief Build the contact geometry, the initial active set, the
        * sparsity pattern that serves every active set, and the vectors.
        * @param[in] constraints Hanging-node and homogeneous Dirichlet
-       * constraints (they act on Newton increments), closed.
+       * constraints (they act on Newton increments), closed; at least the
+       * lines of the locally relevant DoFs and of the contact pair's DoFs.
+       * Must outlive this object (a changed contact pattern reads them
+       * again).
        */
       void
       setup(const dealii::AffineConstraints<double> &constraints);
@@ -146,12 +166,13 @@ namespace Common
                                   const ExternalLoad       &load,
                                   const unsigned int        n_repeats = 3);
 
-      /** @brief Displacement (mm), every entry readable. */
+      /** @brief Displacement (mm): readable at the DoFs of the rank's own
+       * cells and of the contact pair. */
       const dealii::TrilinosWrappers::MPI::Vector &
       displacement() const;
 
       /** @brief Condensed residual f_ext - f_int of the last evaluation
-       * (N), every entry readable. */
+       * (N), readable where displacement() is. */
       const dealii::TrilinosWrappers::MPI::Vector &
       bulk_residual() const;
 
@@ -175,11 +196,23 @@ namespace Common
       const Physics::SolidOperator<dim> &
       solid() const;
 
+      /** @brief The DoFs this rank stores, by kind. */
+      const StoredDoFs &
+      stored_dofs() const;
+
       /** @brief Time per phase so far. */
       const ContactSolveTimes &
       times() const;
 
     private:
+      /** The DoFs this rank stores (owned, partition ghosts, the contact
+       * pair's DoFs and the targets of their constraints), the Dirichlet
+       * and hanging-node constraints of those DoFs out of
+       * @p base_constraints, and the ghosted vectors. */
+      void
+      setup_stored_dofs(
+        const dealii::AffineConstraints<double> &base_constraints);
+
       /** Build the sparsity pattern and the matrices for the current
        * coupling. */
       void
@@ -220,6 +253,7 @@ namespace Common
       dealii::IndexSet locally_owned_dofs;
       dealii::IndexSet locally_relevant_dofs;
 
+      const dealii::AffineConstraints<double> *base_constraints = nullptr;
       std::unique_ptr<Contact::ContactEnforcement<dim>> contact_enforcement;
 
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
@@ -236,6 +270,7 @@ namespace Common
       // Declared after the matrix: Amesos refers to it when destroyed.
       Solvers::LinearSolver linear_solver;
 
+      StoredDoFs        stored_dof_counts;
       ContactSolveTimes solve_times;
     };
   } // namespace Problems
