@@ -195,27 +195,10 @@ namespace CgsRoller
   Common::Problems::ExternalLoad
   RollerProblem::external_load() const
   {
-    const double force = 0.5 * parameters.loading.force_per_thickness;
-    const types::global_dof_index dof = load_dof;
-    const bool owned = dof_handler.locally_owned_dofs().is_element(dof);
-    Common::Problems::ExternalLoad load;
-    load.add = [force, dof, owned](const Common::Solvers::LoadState &state,
-                                   const AffineConstraints<double>  &c,
-                                   TrilinosWrappers::MPI::Vector    &vector) {
-      if (owned)
-        {
-          Vector<double> f(1);
-          f(0) = -state.load_factor() * force;
-          c.distribute_local_to_global(f,
-                                       std::vector<types::global_dof_index>{
-                                         dof},
-                                       vector);
-        }
-    };
-    load.magnitude = [force](const Common::Solvers::LoadState &state) {
-      return state.load_factor() * force;
-    };
-    return load;
+    return Common::Problems::point_load(
+      dof_handler,
+      load_dof,
+      -0.5 * parameters.loading.force_per_thickness);
   }
 
 

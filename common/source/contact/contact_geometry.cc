@@ -61,6 +61,7 @@ namespace Common
       secondary = std::make_unique<ContactSurface<dim>>(dof_handler,
                                                         mapping,
                                                         secondary_id);
+      secondary->symmetrize_normals(constraints);
       if (rigid)
         mortar.reinit(*secondary,
                       *rigid,

@@ -62,11 +62,19 @@ namespace Common
           result.pressure = enforcement.pressure(j);
           // The contact force on node j is -r_j: its tangential part per
           // unit area is the traction on the secondary surface.
+          const Tensor<1, dim> r_tangential = r - (r * row.normal) * row.normal;
+          result.normal                     = row.normal;
+          result.tangential_traction_vector = enforcement.is_active(j) ?
+                                                -r_tangential / row.weight :
+                                                Tensor<1, dim>();
           result.tangential_traction =
             enforcement.is_active(j) ? -(r * t) / row.weight : 0.;
-          result.slip = enforcement.accumulated_slip(j) * t;
+          result.slip_vector = enforcement.accumulated_slip(j);
+          result.slip        = result.slip_vector * t;
+          result.relative_displacement_vector =
+            coupling.relative_displacement(j, u);
           result.relative_displacement =
-            coupling.relative_displacement(j, u) * t;
+            result.relative_displacement_vector * t;
           result.gap    = coupling.weighted_gap(j, u) / row.weight;
           result.status = to_string(enforcement.status(j));
           profile.push_back(result);
@@ -90,6 +98,9 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         force -= enforcement.pressure(j) * coupling.row(j).weight *
                  coupling.row(j).normal;
+      if (enforcement.has_friction())
+        for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+          force += coupling.row(j).weight * enforcement.tangential_traction(j);
       return force;
     }
 

@@ -385,7 +385,60 @@ namespace Common
             }
         }
       for (auto &node : nodes)
-        node.normal /= node.normal.norm();
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            if (node.on_symmetry_plane[c])
+              node.normal[c] = 0.;
+          node.normal /= node.normal.norm();
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSurface<dim>::symmetrize_normals(
+      const AffineConstraints<double> &constraints)
+    {
+      // Per node and component: whether the faces around the node reach
+      // below and above the plane through it normal to e_c.
+      std::vector<std::array<std::array<bool, 2>, dim>> sides(
+        nodes.size(),
+        std::array<std::array<bool, 2>, dim>{});
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        {
+          const double tolerance = 1e-8 * face_size(f);
+          for (const unsigned int a : faces[f].nodes)
+            for (const unsigned int b : faces[f].nodes)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const double d = nodes[b].reference_position[c] -
+                                   nodes[a].reference_position[c];
+                  if (d < -tolerance)
+                    sides[a][c][0] = true;
+                  else if (d > tolerance)
+                    sides[a][c][1] = true;
+                }
+        }
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+        {
+          SurfaceNode<dim>     &node = nodes[n];
+          std::array<bool, dim> held{}, on_plane{};
+          unsigned int          n_held = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const auto *line =
+                constraints.get_constraint_entries(node.dofs[c]);
+              held[c] = line != nullptr && line->empty() &&
+                        constraints.get_inhomogeneity(node.dofs[c]) == 0.;
+              n_held += held[c] ? 1 : 0;
+              // The surface ends at the plane: it lies on one side only.
+              on_plane[c] = held[c] && sides[n][c][0] != sides[n][c][1];
+            }
+          if (n_held < dim)
+            node.on_symmetry_plane = on_plane;
+        }
+      compute_nodal_normals();
     }
 
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <memory>
@@ -293,41 +294,73 @@ namespace Common
 
 
 
-#define INSTANTIATE(dim)                                           \
-  template IO::JsonObject mesh_summary(                            \
-    const DoFHandler<dim> &,                                       \
-    const std::function<double(const Point<dim> &)> &);            \
-  template void print_setup(IO::Console &,                         \
-                            const DoFHandler<dim> &,               \
-                            const ContactNewtonProblem<dim> &);    \
-  template bool begin_run(IO::Console &,                           \
-                          const DoFHandler<dim> &,                 \
-                          const ContactNewtonProblem<dim> &,       \
-                          const ContactRunParameters &,            \
-                          const std::vector<std::string> &);       \
-  template void print_step(IO::Console &,                          \
-                           const Solvers::StepInfo &,              \
-                           const Solvers::NewtonStatistics &,      \
-                           const ContactNewtonProblem<dim> &);     \
-  template void warn_if_search_edge_reached(                       \
-    IO::Console &,                                                 \
-    const ContactNewtonProblem<dim> &);                            \
-  template Solvers::LoadSteppingStatistics run_load_steps(         \
-    ContactNewtonProblem<dim> &,                                   \
-    const ExternalLoad &,                                          \
-    const Solvers::LoadProgramParameters &,                        \
-    const IO::OutputParameters &,                                  \
-    const DoFHandler<dim> &,                                       \
-    const Mapping<dim> &,                                          \
-    IO::Console &,                                                 \
-    const StepReport &,                                            \
-    IO::JsonObject &);                                             \
-  template void measure_contact_cost(ContactNewtonProblem<dim> &,  \
-                                     const ExternalLoad &,         \
-                                     const Solvers::LoadState &,   \
-                                     const ContactRunParameters &, \
-                                     IO::Console &,                \
-                                     IO::JsonObject &);
+    template <int dim>
+    ExternalLoad
+    point_load(const DoFHandler<dim>        &dof_handler,
+               const types::global_dof_index dof,
+               const double                  force)
+    {
+      const bool   owned = dof_handler.locally_owned_dofs().is_element(dof);
+      ExternalLoad load;
+      load.add = [force, dof, owned](const Solvers::LoadState        &state,
+                                     const AffineConstraints<double> &c,
+                                     TrilinosWrappers::MPI::Vector   &vector) {
+        if (owned)
+          {
+            Vector<double> f(1);
+            f(0) = state.load_factor() * force;
+            c.distribute_local_to_global(f,
+                                         std::vector<types::global_dof_index>{
+                                           dof},
+                                         vector);
+          }
+      };
+      load.magnitude = [force](const Solvers::LoadState &state) {
+        return state.load_factor() * std::abs(force);
+      };
+      return load;
+    }
+
+
+
+#define INSTANTIATE(dim)                                                   \
+  template IO::JsonObject mesh_summary(                                    \
+    const DoFHandler<dim> &,                                               \
+    const std::function<double(const Point<dim> &)> &);                    \
+  template void print_setup(IO::Console &,                                 \
+                            const DoFHandler<dim> &,                       \
+                            const ContactNewtonProblem<dim> &);            \
+  template bool begin_run(IO::Console &,                                   \
+                          const DoFHandler<dim> &,                         \
+                          const ContactNewtonProblem<dim> &,               \
+                          const ContactRunParameters &,                    \
+                          const std::vector<std::string> &);               \
+  template void print_step(IO::Console &,                                  \
+                           const Solvers::StepInfo &,                      \
+                           const Solvers::NewtonStatistics &,              \
+                           const ContactNewtonProblem<dim> &);             \
+  template void warn_if_search_edge_reached(                               \
+    IO::Console &,                                                         \
+    const ContactNewtonProblem<dim> &);                                    \
+  template Solvers::LoadSteppingStatistics run_load_steps(                 \
+    ContactNewtonProblem<dim> &,                                           \
+    const ExternalLoad &,                                                  \
+    const Solvers::LoadProgramParameters &,                                \
+    const IO::OutputParameters &,                                          \
+    const DoFHandler<dim> &,                                               \
+    const Mapping<dim> &,                                                  \
+    IO::Console &,                                                         \
+    const StepReport &,                                                    \
+    IO::JsonObject &);                                                     \
+  template ExternalLoad point_load(const DoFHandler<dim> &,                \
+                                   const types::global_dof_index,          \
+                                   const double);                          \
+  template void         measure_contact_cost(ContactNewtonProblem<dim> &,  \
+                                             const ExternalLoad &,         \
+                                             const Solvers::LoadState &,   \
+                                             const ContactRunParameters &, \
+                                             IO::Console &,                \
+                                             IO::JsonObject &);
     INSTANTIATE(2)
     INSTANTIATE(3)
 #undef INSTANTIATE

@@ -43,6 +43,18 @@ namespace Common
       /** Total relative tangential displacement since the undeformed
        * state, primary minus secondary, along t (mm). */
       double relative_displacement;
+      /** Outward unit normal of the secondary surface. */
+      dealii::Tensor<1, dim> normal;
+      /** Tangential traction on the secondary surface, the vector in the
+       * tangent plane (MPa); tangential_traction is its component along
+       * tangent_of() the normal. */
+      dealii::Tensor<1, dim> tangential_traction_vector;
+      /** Slip accumulated in contact as a vector (mm), primary minus
+       * secondary. */
+      dealii::Tensor<1, dim> slip_vector;
+      /** Total relative tangential displacement as a vector (mm), primary
+       * minus secondary. */
+      dealii::Tensor<1, dim> relative_displacement_vector;
       /** Mean normal gap g~_j / D_j (mm), negative when penetrating. */
       double gap;
       /** "open", "stick" or "slip" (a closed frictionless point slips). */
@@ -101,7 +113,8 @@ namespace Common
 
     /**
      * @brief Total contact force on the secondary surface,
-     * \f$-\sum_j\lambda_j D_j n_j\f$ (N, or N/mm in plane strain).
+     * \f$\sum_j D_j(-\lambda_j n_j + t_j)\f$ with the tangential
+     * tractions t_j of friction (N, or N/mm in plane strain).
      */
     template <int dim>
     dealii::Tensor<1, dim>

@@ -14,6 +14,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 
 #include <array>
 #include <vector>
@@ -37,6 +38,10 @@ namespace Common
       std::array<dealii::types::global_dof_index, dim> dofs;
       /** Averaged outward unit normal in the current configuration. */
       dealii::Tensor<1, dim> normal;
+      /** Components c for which the node lies where the surface meets a
+       * symmetry plane normal to e_c (ContactSurface::symmetrize_normals()):
+       * its normal has no component along e_c. */
+      std::array<bool, dim> on_symmetry_plane{};
     };
 
     /**
@@ -150,6 +155,20 @@ namespace Common
       template <typename VectorType>
       void
       update_positions(const VectorType &displacement);
+
+      /**
+       * @brief Take the symmetry planes of a model cut by them into the
+       * nodal normals. A node whose displacement component c is held at
+       * zero by a line of @p constraints without entries, while another
+       * component is free, and whose faces all lie on one side of the plane
+       * through it normal to e_c, sits where the surface meets a symmetry
+       * plane: its normal drops component c (the average over its faces and
+       * their mirror images, the normal of the uncut body). Kept when the
+       * nodes move. Nodes with every component held, and nodes inside the
+       * surface, are left alone.
+       */
+      void
+      symmetrize_normals(const dealii::AffineConstraints<double> &constraints);
 
       /** @brief Scalar base element of the displacement element. */
       const dealii::FiniteElement<dim> &

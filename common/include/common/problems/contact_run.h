@@ -110,6 +110,17 @@ namespace Common
     warn_if_search_edge_reached(IO::Console                     &console,
                                 const ContactNewtonProblem<dim> &problem);
 
+    /**
+     * @brief The load of a point force on one DoF: @p force (N, signed
+     * along the DoF's component) times the load factor, added by the rank
+     * that owns @p dof; its magnitude is |force| times the load factor.
+     */
+    template <int dim>
+    ExternalLoad
+    point_load(const dealii::DoFHandler<dim>        &dof_handler,
+               const dealii::types::global_dof_index dof,
+               const double                          force);
+
     /** Called after a step is accepted and committed. */
     using StepReport = std::function<void(const Solvers::StepInfo &,
                                           const Solvers::NewtonStatistics &)>;
