@@ -22,10 +22,8 @@ namespace LoadedPin
 
   namespace
   {
-    using namespace Dimensions;
-
-    /** Geometric tolerance (mm). */
-    constexpr double tolerance = 1e-8 * hole_radius;
+    /** Geometric tolerance relative to the hole radius. */
+    constexpr double relative_tolerance = 1e-8;
 
     /** A planform from its vertices and its cells, each given by its
      * vertices in deal.II's order (counterclockwise: 0, 1, 3, 2). */
@@ -46,10 +44,10 @@ namespace LoadedPin
      * 180 degrees; 5 to 7 on the outer arc at 0, 45 and 90 degrees; then
      * the corners (-100, 100), (-100, 0), (-200, 0) and (-200, 100). */
     void
-    make_sheet_planform(Triangulation<2> &planform)
+    make_sheet_planform(const PinGeometry &g, Triangulation<2> &planform)
     {
-      const double a = hole_radius;
-      const double b = outer_radius;
+      const double a = g.hole_radius;
+      const double b = g.outer_radius;
       const double s = std::sqrt(0.5);
       create_planform({{a, 0.},
                        {s * a, s * a},
@@ -61,8 +59,8 @@ namespace LoadedPin
                        {0., b},
                        {-b, b},
                        {-b, 0.},
-                       {-sheet_length, 0.},
-                       {-sheet_length, b}},
+                       {-g.sheet_length, 0.},
+                       {-g.sheet_length, b}},
                       {{{0, 5, 1, 6}},
                        {{1, 6, 2, 7}},
                        {{2, 7, 3, 8}},
@@ -71,14 +69,13 @@ namespace LoadedPin
                       planform);
     }
 
-    /** The pin's planform, a half disc: vertex 0 at the centre; 1 to 5
+    /** The pin's planform, a half disc of radius @p a: vertex 0 at the centre; 1 to 5
      * around it at 0, 45, ..., 180 degrees (at radius a/2 on the x and y
      * axes, at (+-0.4 a, 0.4 a) in between); 6 to 10 on the circle at the
      * same angles. Two cells about the centre, four along the circle. */
     void
-    make_pin_planform(Triangulation<2> &planform)
+    make_pin_planform(const double a, Triangulation<2> &planform)
     {
-      const double a = hole_radius;
       const double s = std::sqrt(0.5);
       create_planform({{0., 0.},
                        {0.5 * a, 0.},
@@ -108,34 +105,43 @@ namespace LoadedPin
     {
       for (const unsigned int v : face->vertex_indices())
         if (std::abs(std::hypot(face->vertex(v)[0], face->vertex(v)[1]) -
-                     radius) > tolerance)
+                     radius) > relative_tolerance * radius)
           return false;
       return true;
     }
 
-    /** Whether @p face lies on one of the cylinders r = 50 or r = 100. */
+    /** Whether @p face lies on one of the cylinders of the body: the hole
+     * or the outer arc of the sheet, the pin's cylinder. */
     bool
-    on_any_cylinder(const Triangulation<3>::face_iterator &face)
+    on_any_cylinder(const Triangulation<3>::face_iterator &face,
+                    const PinGeometry                     &g,
+                    const bool                             pin)
     {
-      return on_cylinder(face, hole_radius) || on_cylinder(face, outer_radius);
+      return pin ? on_cylinder(face, g.pin_radius()) :
+                   on_cylinder(face, g.hole_radius) ||
+                     on_cylinder(face, g.outer_radius);
     }
 
     /** The boundary id of the boundary face @p face of the pin (if
      * @p pin) or the sheet, whose top face is z = @p height (mm). */
     types::boundary_id
     boundary_id(const Triangulation<3>::face_iterator &face,
+                const PinGeometry                     &g,
                 const bool                             pin,
                 const double                           height)
     {
-      const Point<3> c = face->center();
+      const double   tolerance = relative_tolerance * g.hole_radius;
+      const Point<3> c         = face->center();
       if (std::abs(c[1]) < tolerance)
         return BoundaryIds::symmetry_y0;
       if (std::abs(c[2]) < tolerance)
         return BoundaryIds::symmetry_z0;
-      if (std::abs(c[0] + sheet_length) < tolerance)
+      if (std::abs(c[0] + g.sheet_length) < tolerance)
         return BoundaryIds::clamped;
-      if (on_cylinder(face, hole_radius))
-        return pin ? BoundaryIds::pin_contact : BoundaryIds::hole;
+      if (pin && on_cylinder(face, g.pin_radius()))
+        return BoundaryIds::pin_contact;
+      if (!pin && on_cylinder(face, g.hole_radius))
+        return BoundaryIds::hole;
       if (pin && std::abs(c[2] - height) < tolerance)
         return BoundaryIds::pin_end;
       return BoundaryIds::free;
@@ -148,6 +154,7 @@ namespace LoadedPin
      * @p cells_manifold_id. */
     void
     extrude_body(const Triangulation<2>  &planform,
+                 const PinGeometry       &geometry,
                  const unsigned int       n_layers,
                  const double             height,
                  const types::material_id material_id,
@@ -164,47 +171,75 @@ namespace LoadedPin
         {
           cell->set_material_id(material_id);
           for (const auto &face : cell->face_iterators())
-            if (on_any_cylinder(face))
+            if (on_any_cylinder(face, geometry, pin))
               cell->set_all_manifold_ids(cells_manifold_id);
         }
       for (const auto &cell : body.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             {
-              if (on_any_cylinder(face))
+              if (on_any_cylinder(face, geometry, pin))
                 face->set_all_manifold_ids(ManifoldIds::cylinder);
-              face->set_boundary_id(boundary_id(face, pin, height));
+              face->set_boundary_id(boundary_id(face, geometry, pin, height));
             }
     }
   } // namespace
 
 
 
-  double
-  contact_distance(const Point<3> &p)
+  void
+  PinGeometry::check() const
   {
-    return std::hypot(std::hypot(p[0], p[1]) - hole_radius,
-                      std::max(0., p[2] - sheet_half_thickness));
+    AssertThrow(hole_radius > 0.,
+                ExcMessage("Geometry: 'Hole radius' must be positive."));
+    AssertThrow(clearance >= 0. && clearance < 0.5 * hole_radius,
+                ExcMessage("Geometry: 'Clearance' must be at least 0 and "
+                           "less than half the hole radius."));
+    AssertThrow(outer_radius > hole_radius,
+                ExcMessage("Geometry: 'Hole radius' must be less than 'Outer "
+                           "radius': the hole must lie inside the lug."));
+    AssertThrow(sheet_length > outer_radius,
+                ExcMessage("Geometry: 'Sheet length' must exceed "
+                           "'Outer radius'."));
+    AssertThrow(sheet_thickness > 0.,
+                ExcMessage("Geometry: 'Sheet thickness' must be positive."));
+    AssertThrow(pin_length >= sheet_thickness,
+                ExcMessage("Geometry: 'Pin length' must be at least the "
+                           "sheet thickness."));
+  }
+
+
+
+  double
+  contact_distance(const PinGeometry &geometry, const Point<3> &p)
+  {
+    return std::hypot(std::hypot(p[0], p[1]) - geometry.hole_radius,
+                      std::max(0., p[2] - 0.5 * geometry.sheet_thickness));
   }
 
 
 
   void
-  make_quarter_mesh(const MeshOptions &options, Triangulation<3> &tria)
+  make_quarter_mesh(const PinGeometry &geometry,
+                    const MeshOptions &options,
+                    Triangulation<3>  &tria)
   {
+    geometry.check();
     Triangulation<2> sheet_planform, pin_planform;
-    make_sheet_planform(sheet_planform);
-    make_pin_planform(pin_planform);
+    make_sheet_planform(geometry, sheet_planform);
+    make_pin_planform(geometry.pin_radius(), pin_planform);
     Triangulation<3> sheet, pin;
     extrude_body(sheet_planform,
+                 geometry,
                  options.n_sheet_layers,
-                 sheet_half_thickness,
+                 0.5 * geometry.sheet_thickness,
                  MaterialIds::sheet,
                  ManifoldIds::sheet_cells,
                  sheet);
     extrude_body(pin_planform,
+                 geometry,
                  options.n_pin_layers,
-                 pin_half_length,
+                 0.5 * geometry.pin_length,
                  MaterialIds::pin,
                  ManifoldIds::pin_cells,
                  pin);
@@ -221,9 +256,10 @@ namespace LoadedPin
       }
 
     tria.refine_global(options.n_global_refinements);
-    Common::Geometry::refine_toward<3>(tria,
-                                       &contact_distance,
-                                       options.n_contact_refinements,
-                                       options.grading_factor);
+    Common::Geometry::refine_toward<3>(
+      tria,
+      [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
+      options.n_contact_refinements,
+      options.grading_factor);
   }
 } // namespace LoadedPin

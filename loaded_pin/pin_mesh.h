@@ -15,21 +15,46 @@
 
 namespace LoadedPin
 {
-  /** Dimensions of the quarter model (mm). */
-  namespace Dimensions
+  /**
+   * @brief Dimensions of the bodies (mm); the defaults are those of the
+   * benchmark. The quarter model spans y >= 0 and z >= 0.
+   */
+  struct PinGeometry
   {
-    /** Radius of the hole and of the pin. */
-    constexpr double hole_radius = 50.;
-    /** Radius of the lug's outer arc (x >= 0), also the sheet's width in
-     * the quarter model (0 <= y <= 100). */
-    constexpr double outer_radius = 100.;
-    /** Distance from the clamped face x = -200 to the hole axis. */
-    constexpr double sheet_length = 200.;
-    /** Half the sheet thickness: the sheet spans 0 <= z <= 5. */
-    constexpr double sheet_half_thickness = 5.;
-    /** Half the pin length: the pin spans 0 <= z <= 10. */
-    constexpr double pin_half_length = 10.;
-  } // namespace Dimensions
+    /** Radius of the hole. */
+    double hole_radius = 50.;
+    /** Radial clearance between hole and pin: the pin's radius is
+     * hole_radius - clearance. */
+    double clearance = 0.;
+    /** Radius of the lug's outer arc (x >= 0), also half the sheet's
+     * width: the quarter model spans 0 <= y <= outer_radius. */
+    double outer_radius = 100.;
+    /** Distance from the clamped face x = -sheet_length to the hole
+     * axis. */
+    double sheet_length = 200.;
+    /** Thickness of the sheet: the quarter model spans
+     * 0 <= z <= sheet_thickness / 2. */
+    double sheet_thickness = 10.;
+    /** Length of the pin: the quarter model spans
+     * 0 <= z <= pin_length / 2. */
+    double pin_length = 20.;
+
+    /** @brief Radius of the pin (mm). */
+    double
+    pin_radius() const
+    {
+      return hole_radius - clearance;
+    }
+
+    /**
+     * @brief Throw with a one-line message naming the entry if the
+     * dimensions do not make the lug and pin of the mesh: positive sizes,
+     * 0 <= clearance < hole_radius / 2, hole_radius < outer_radius <
+     * sheet_length, pin_length >= sheet_thickness.
+     */
+    void
+    check() const;
+  };
 
   /** Material ids: one per body. */
   namespace MaterialIds
@@ -38,11 +63,11 @@ namespace LoadedPin
     constexpr dealii::types::material_id sheet = 2;
   } // namespace MaterialIds
 
-  /** Boundary ids of both bodies. */
+  /** Boundary ids of both bodies (with the benchmark's dimensions). */
   namespace BoundaryIds
   {
     /** Traction-free faces: the sheet's face z = 5, its edge y = 100 and
-     * its outer arc r = 100. */
+     * its outer arc r = 100; the pin's cylinder beyond the sheet. */
     constexpr dealii::types::boundary_id free = 0;
     /** The sheet's clamped face x = -200. */
     constexpr dealii::types::boundary_id clamped = 1;
@@ -50,7 +75,8 @@ namespace LoadedPin
     constexpr dealii::types::boundary_id symmetry_y0 = 2;
     /** The symmetry plane z = 0 (both bodies). */
     constexpr dealii::types::boundary_id symmetry_z0 = 3;
-    /** The pin's cylinder r = 50, 0 <= z <= 10. */
+    /** The pin's cylinder r = 50, 0 <= z <= 10 (the part beyond the sheet
+     * too: under load the sheet's edge may move along it). */
     constexpr dealii::types::boundary_id pin_contact = 4;
     /** The sheet's hole r = 50, 0 <= z <= 5. */
     constexpr dealii::types::boundary_id hole = 5;
@@ -89,15 +115,18 @@ namespace LoadedPin
   };
 
   /**
-   * @brief Distance (mm) of @p p from the contact surface, the cylinder
-   * r = 50 over 0 <= z <= 5: the target of the graded refinement.
+   * @brief Distance (mm) of @p p from the contact surface, the hole's
+   * cylinder r = hole_radius over 0 <= z <= sheet_thickness / 2: the
+   * target of the graded refinement.
    */
   double
-  contact_distance(const dealii::Point<3> &p);
+  contact_distance(const PinGeometry &geometry, const dealii::Point<3> &p);
 
   /**
-   * @brief Build the quarter model of the sheet and the pin in the empty
-   * @p tria (a Triangulation<3> or a parallel::shared::Triangulation<3>).
+   * @brief Build the quarter model of the sheet and the pin of
+   * @p geometry (checked first) in the empty @p tria (a Triangulation<3>
+   * or a parallel::shared::Triangulation<3>). The sizes below are those
+   * of the benchmark; other dimensions scale the same layout.
    *
    * Coarse mesh: the planforms below, extruded along z. Sheet (material
    * MaterialIds::sheet, 0 <= z <= 5): two cells of the quarter annulus
@@ -119,7 +148,9 @@ namespace LoadedPin
    * pin's axis exist at every refinement.
    */
   void
-  make_quarter_mesh(const MeshOptions &options, dealii::Triangulation<3> &tria);
+  make_quarter_mesh(const PinGeometry        &geometry,
+                    const MeshOptions        &options,
+                    dealii::Triangulation<3> &tria);
 } // namespace LoadedPin
 
 #endif

@@ -10,10 +10,14 @@ modes ('cg amg' for frictionless cases, 'gmres amg' also with friction).
 For each run it records the Newton iterations, the linear-solve and total
 wall times, the peak resident memory, and the results (u_z on the axis,
 the centre pressure, the contact radius), with their relative difference
-from the first solver's. Writes linear_solver_study.csv.
+from the first solver's. Writes linear_solver_study.csv. With --ranks N
+the runs use N MPI ranks (mpirun), and the memory is the largest rank's.
+For benchmark 4: --app loaded_pin --prm parameters/loaded_pin/
+loaded_pin_mu01.prm --solvers "mumps reuse" "gmres amg", with --mesh
+"Number of contact refinements=3" for the finest Q2 mesh of the study.
 
 Usage: scripts/linear_solver_study.py [--build DIR] [--out DIR]
-           [--prm FILE] [--app punch3d|cgs_roller]
+           [--prm FILE] [--app punch3d|cgs_roller|loaded_pin] [--ranks N]
            [--solvers "mumps" "mumps reuse" "cg amg" "gmres amg"]
            [--mesh "Number of contact refinements=1" ...]
 """
@@ -27,7 +31,18 @@ RESULT_KEYS = {
                 "contact_radius_mm"],
     "cgs_roller": ["peak_pressure_MPa", "contact_half_width_mm",
                    "peak_tangential_traction_MPa"],
+    # Nested keys of summary.json "results" are joined by dots.
+    "loaded_pin": ["mid_plane.arc_end_theta_deg", "mid_plane.peak_pressure_MPa",
+                   "pin_centre_ux_mm"],
 }
+
+
+def result(summary, key):
+    """The value of a (dotted) key of summary.json's results block."""
+    value = summary["results"]
+    for part in key.split("."):
+        value = value[part]
+    return value
 
 
 def solver_overrides(solver):
@@ -46,6 +61,8 @@ def main():
     parser.add_argument("--app", default="punch3d", choices=sorted(RESULT_KEYS))
     parser.add_argument("--solvers", nargs="+",
                         default=["mumps", "mumps reuse", "cg amg"])
+    parser.add_argument("--ranks", type=int, default=1,
+                        help="MPI ranks (mpirun -np)")
     parser.add_argument("--mesh", nargs="*", default=[],
                         help="'Mesh' entries to override, as 'name=value'")
     args = parser.parse_args()
@@ -60,15 +77,17 @@ def main():
         overrides = {"Linear solver": solver_overrides(solver)}
         if mesh:
             overrides["Mesh"] = mesh
-        summary, wall, memory = run_variant_measured(app, prm, case_dir, overrides)
-        row = {"solver": solver,
+        launcher = ("mpirun", "-np", str(args.ranks)) if args.ranks > 1 else ()
+        summary, wall, memory = run_variant_measured(app, prm, case_dir, overrides,
+                                                     launcher)
+        row = {"solver": solver, "mpi_ranks": args.ranks,
                "n_dofs": summary["mesh"]["n_dofs"],
                "newton_iterations": summary["newton"]["total_iterations"],
                "linear_solve_s": round(summary["timing_s"]["linear_solve_s"], 2),
                "wall_time_s": round(wall, 2),
                "peak_memory_MB": round(memory, 1)}
         for key in RESULT_KEYS[args.app]:
-            row[key] = summary["results"][key]
+            row[key] = result(summary, key)
         if rows:
             for key in RESULT_KEYS[args.app]:
                 row[f"{key}_difference"] = "%.2e" % (row[key] / rows[0][key] - 1.)

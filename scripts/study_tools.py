@@ -39,10 +39,12 @@ def run_variant(app, production, case_dir, overrides):
     return summary, wall
 
 
-def run_variant_measured(app, production, case_dir, overrides):
+def run_variant_measured(app, production, case_dir, overrides, launcher=()):
     """As run_variant(), and also the run's peak resident memory (MB).
 
-    Returns (summary.json as a dict, wall time in seconds, peak memory in MB).
+    launcher: a command prefix, e.g. ("mpirun", "-np", "2"); the peak memory
+    is then that of the largest process. Returns (summary.json as a dict,
+    wall time in seconds, peak memory in MB).
     """
     os.makedirs(case_dir, exist_ok=True)
     sections = dict(overrides)
@@ -60,7 +62,7 @@ def run_variant_measured(app, production, case_dir, overrides):
     with open(prm, "w") as f:
         f.write(text)
     start = time.time()
-    process = subprocess.Popen([app, prm], stdout=subprocess.DEVNULL)
+    process = subprocess.Popen([*launcher, app, prm], stdout=subprocess.DEVNULL)
     _, status, usage = os.wait4(process.pid, 0)
     wall = time.time() - start
     process.returncode = os.waitstatus_to_exitcode(status)

@@ -102,7 +102,7 @@ namespace
             deviation = std::max(deviation,
                                  std::abs(std::hypot(face->vertex(v)[0],
                                                      face->vertex(v)[1]) /
-                                            Dimensions::hole_radius -
+                                            PinGeometry().hole_radius -
                                           1.));
     return deviation;
   }
@@ -125,7 +125,7 @@ namespace
   check(const MeshOptions &options)
   {
     Triangulation<3> tria;
-    make_quarter_mesh(options, tria);
+    make_quarter_mesh(PinGeometry(), options, tria);
     deallog << "global refinements " << options.n_global_refinements
             << ", contact refinements " << options.n_contact_refinements << ": "
             << tria.n_active_cells() << " cells" << std::endl;
@@ -189,7 +189,11 @@ namespace
       }
     deallog << "  smallest cell near the contact surface: " << std::fixed
             << std::setprecision(2)
-            << Common::Geometry::smallest_cell_near<3>(tria, &contact_distance)
+            << Common::Geometry::smallest_cell_near<3>(
+                 tria,
+                 [](const Point<3> &p) {
+                   return contact_distance(PinGeometry(), p);
+                 })
             << " mm" << std::endl;
     for (const auto &[p, material] :
          {std::make_pair(Point<3>(0., 0., 10.), MaterialIds::pin),
@@ -228,8 +232,8 @@ main(int argc, char **argv)
   // vertices.
   Triangulation<3>                   plain;
   parallel::shared::Triangulation<3> shared(MPI_COMM_WORLD);
-  make_quarter_mesh(refined, plain);
-  make_quarter_mesh(refined, shared);
+  make_quarter_mesh(PinGeometry(), refined, plain);
+  make_quarter_mesh(PinGeometry(), refined, shared);
   bool same = plain.n_active_cells() == shared.n_active_cells() &&
               plain.n_vertices() == shared.n_vertices();
   for (unsigned int v = 0; same && v < plain.n_vertices(); ++v)
@@ -242,7 +246,7 @@ main(int argc, char **argv)
       MeshOptions options;
       options.n_global_refinements = n;
       Triangulation<3> tria;
-      make_quarter_mesh(options, tria);
+      make_quarter_mesh(PinGeometry(), options, tria);
       deallog << "global refinements " << n
               << ", no contact refinement: " << tria.n_active_cells()
               << " cells" << std::endl;
