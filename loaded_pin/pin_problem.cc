@@ -217,6 +217,34 @@ namespace LoadedPin
           }
         line.max_slip = std::max(line.max_slip, std::abs(p.slip_theta));
       }
+    // The parabola through the largest nodal pressure and its neighbours.
+    line.fitted_peak_pressure       = line.peak_pressure;
+    line.fitted_peak_pressure_theta = line.peak_pressure_theta;
+    for (unsigned int i = 1; i + 1 < line.points.size(); ++i)
+      if (line.points[i].pressure == line.peak_pressure)
+        {
+          const double x0 = line.points[i - 1].theta,
+                       y0 = line.points[i - 1].pressure;
+          const double x1 = line.points[i].theta, y1 = line.points[i].pressure;
+          const double x2 = line.points[i + 1].theta,
+                       y2 = line.points[i + 1].pressure;
+          // Divided differences: p(x) = y1 + b (x - x1) + c (x - x1)^2.
+          const double d01 = (y1 - y0) / (x1 - x0);
+          const double d12 = (y2 - y1) / (x2 - x1);
+          const double c   = (d12 - d01) / (x2 - x0);
+          const double b   = d01 + c * (x1 - x0);
+          if (c < 0.)
+            {
+              const double x                  = std::clamp(x1 - 0.5 * b / c,
+                                          std::min(x0, x2),
+                                          std::max(x0, x2));
+              line.fitted_peak_pressure_theta = x;
+              line.fitted_peak_pressure =
+                y1 + b * (x - x1) + c * (x - x1) * (x - x1);
+            }
+          break;
+        }
+
     const double phi_0 = along_phi.front().position[0];
     line.arc_end_theta =
       180. - phi_0 - Common::Contact::contact_extent(along_phi, 0);

@@ -60,8 +60,13 @@ namespace LoadedPin
     /** The plane z of the line (mm). */
     double                       z;
     std::vector<PinContactPoint> points;
-    /** Peak pressure (MPa) and its theta (degrees). */
+    /** Peak pressure (MPa) and its theta (degrees): the largest nodal
+     * value. */
     double peak_pressure = 0., peak_pressure_theta = 0.;
+    /** Peak pressure (MPa) and its theta (degrees) of the parabola through
+     * the largest nodal value and its two neighbours: the peak between the
+     * nodes, less dependent on where the nodes fall. */
+    double fitted_peak_pressure = 0., fitted_peak_pressure_theta = 0.;
     /** End of the contact arc theta_c (degrees): the arc is
      * theta_c <= theta <= 180. */
     double arc_end_theta = 180.;

@@ -51,6 +51,8 @@ namespace LoadedPin
         .set("arc_end_theta_deg", line.arc_end_theta)
         .set("peak_pressure_MPa", line.peak_pressure)
         .set("peak_pressure_theta_deg", line.peak_pressure_theta)
+        .set("fitted_peak_pressure_MPa", line.fitted_peak_pressure)
+        .set("fitted_peak_pressure_theta_deg", line.fitted_peak_pressure_theta)
         .set("peak_traction_MPa", line.peak_traction)
         .set("peak_traction_theta_deg", line.peak_traction_theta)
         .set("max_slip_mm", line.max_slip);
@@ -102,6 +104,12 @@ namespace LoadedPin
                                "p/p_cosine",
                                line->peak_pressure / cosine_peak);
         console.print_quantity("  at theta", "deg", line->peak_pressure_theta);
+        console.print_quantity("Peak pressure, parabola" + where,
+                               "MPa",
+                               line->fitted_peak_pressure);
+        console.print_quantity("  at theta",
+                               "deg",
+                               line->fitted_peak_pressure_theta);
         if (friction)
           {
             console.print_quantity("Peak traction" + where,
