@@ -1,6 +1,7 @@
 #include <common/contact/active_set_policy.h>
 #include <common/contact/contact_search.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
 
 #include <algorithm>
@@ -52,10 +53,13 @@ namespace Common
       const FrictionModel<dim>               &friction,
       ContactState<dim>                      &state) const
     {
-      const unsigned int       n = nodes.size();
+      const RowPartition      &rows = state.rows();
+      const unsigned int       n    = nodes.size();
       std::vector<PointStatus> status(n, PointStatus::open);
       for (unsigned int j = 0; j < n; ++j)
         {
+          if (!rows.is_held(j))
+            continue;
           // The weighted gap averages over the node's support and is not
           // zero at a touching node; the pointwise gap is, up to round-off.
           const bool touching =
@@ -64,19 +68,41 @@ namespace Common
             touching ? friction.status_on_contact() : PointStatus::open;
         }
       // Close the nearest node that carries a multiplier if no touching
-      // one does (every rank holds every row, so all decide alike).
+      // one does: each rank's nearest owned node, then the smallest gap
+      // over the ranks (the first node on ties, as in serial).
       unsigned int nearest = numbers::invalid_unsigned_int;
       bool         held    = false;
       for (unsigned int j = 0; j < n; ++j)
         {
-          if (!nodes[j].paired || nodes[j].weight <= 0.)
+          if (!rows.is_owned(j) || !nodes[j].paired || nodes[j].weight <= 0.)
             continue;
           held = held || status[j] != PointStatus::open;
           if (nearest == numbers::invalid_unsigned_int ||
               nodes[j].nodal_gap < nodes[nearest].nodal_gap)
             nearest = j;
         }
-      if (!held && nearest != numbers::invalid_unsigned_int)
+      if (rows.is_distributed())
+        {
+          const MPI_Comm comm = rows.communicator();
+          held = Utilities::MPI::max(static_cast<unsigned int>(held), comm) > 0;
+          struct
+          {
+            double gap;
+            int    j;
+          } local{std::numeric_limits<double>::infinity(),
+                  std::numeric_limits<int>::max()},
+            global;
+          if (nearest != numbers::invalid_unsigned_int)
+            local = {nodes[nearest].nodal_gap, static_cast<int>(nearest)};
+          const int ierr =
+            MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+          AssertThrowMPI(ierr);
+          nearest = global.j == std::numeric_limits<int>::max() ?
+                      numbers::invalid_unsigned_int :
+                      static_cast<unsigned int>(global.j);
+        }
+      if (!held && nearest != numbers::invalid_unsigned_int &&
+          rows.is_held(nearest))
         status[nearest] = friction.status_on_contact();
       state.reset(status);
     }
@@ -104,17 +130,22 @@ namespace Common
     ActiveSetPolicy<dim>::codes(const ContactState<dim>           &state,
                                 const std::vector<NodeState<dim>> &nodes) const
     {
-      std::vector<int> result(nodes.size());
+      const RowPartition &rows = state.rows();
+      std::vector<int>    result;
+      result.reserve(rows.n_owned(nodes.size()));
       for (unsigned int j = 0; j < nodes.size(); ++j)
         {
+          if (!rows.is_owned(j))
+            continue;
           const NodeState<dim> &s   = nodes[j];
           const auto &free_tangents = state.directions().free_tangents(j);
-          result[j]                 = static_cast<int>(s.status);
+          int         code          = static_cast<int>(s.status);
           // Along a single free tangent (2D, or a symmetry plane in 3D)
           // the slip direction is one of its two senses.
           if (free_tangents.size() == 1 && s.status == PointStatus::slip &&
               s.slip_direction.norm() > 0.)
-            result[j] += (s.slip_direction * free_tangents[0] < 0. ? 10 : 0);
+            code += (s.slip_direction * free_tangents[0] < 0. ? 10 : 0);
+          result.push_back(code);
         }
       return result;
     }
@@ -156,11 +187,19 @@ namespace Common
                                  const FrictionModel<dim> &friction,
                                  ContactState<dim>        &state)
     {
-      const unsigned int n = nodes.size();
-      std::vector<bool>  closed(n, false), next(n, false);
-      unsigned int       n_closed = 0, n_opened = 0;
+      // Each rank decides the nodes it owns; counts and the safeguards
+      // that look at every node are collectives, so that every rank takes
+      // the same branch.
+      const RowPartition       &rows        = state.rows();
+      const MPI_Comm            comm        = rows.communicator();
+      const bool                distributed = rows.is_distributed();
+      const unsigned int        n           = nodes.size();
+      std::vector<bool>         closed(n, false), next(n, false);
+      std::vector<unsigned int> n_closed_opened(2, 0);
       for (unsigned int j = 0; j < n; ++j)
         {
+          if (!rows.is_owned(j))
+            continue;
           closed[j] = state.is_closed(j);
           if (!nodes[j].paired)
             continue;
@@ -168,60 +207,20 @@ namespace Common
           next[j]          = normal.is_closed(state.node(j).pressure,
                                      gap,
                                      ncp_constant(nodes[j].mesh_size));
-          n_closed += (next[j] && !closed[j]);
-          n_opened += (!next[j] && closed[j]);
+          n_closed_opened[0] += (next[j] && !closed[j]);
+          n_closed_opened[1] += (!next[j] && closed[j]);
         }
+      if (distributed)
+        Utilities::MPI::sum(n_closed_opened, comm, n_closed_opened);
+      const unsigned int n_closed = n_closed_opened[0];
+      const unsigned int n_opened = n_closed_opened[1];
 
       if (n_closed > 0 && last_update_extrapolated)
         extrapolation_enabled = false;
       last_update_extrapolated = false;
 
       if (extrapolation_enabled && n_closed == 0 && n_opened > 0)
-        {
-          std::vector<unsigned int> opened, kept;
-          for (unsigned int j = 0; j < n; ++j)
-            if (closed[j] && !next[j])
-              opened.push_back(j);
-            else if (next[j])
-              kept.push_back(j);
-          std::vector<unsigned int> also_opened;
-          if (!kept.empty())
-            {
-              // Nearest-point queries on an R-tree of the closed set
-              // (NearestPoints): O(n log n), not a loop over all pairs.
-              std::vector<Point<dim>> positions(n);
-              for (unsigned int j = 0; j < n; ++j)
-                positions[j] = nodes[j].position;
-              NearestPoints<dim> closed_set(positions, kept);
-              // Distance of each opened node to the closed set.
-              std::vector<double> band(opened.size());
-              for (unsigned int r = 0; r < opened.size(); ++r)
-                band[r] = positions[opened[r]].distance(
-                  positions[closed_set.nearest(positions[opened[r]])]);
-              // The closed nodes within twice an opened node's band: the
-              // nearest remaining one while it lies inside, each taken out
-              // of the tree once found.
-              for (unsigned int r = 0; r < opened.size(); ++r)
-                {
-                  const Point<dim> &x = positions[opened[r]];
-                  for (unsigned int j = closed_set.nearest(x);
-                       j != numbers::invalid_unsigned_int &&
-                       positions[j].distance(x) < 2. * band[r] * (1. - 1e-10);
-                       j = closed_set.nearest(x))
-                    {
-                      also_opened.push_back(j);
-                      closed_set.remove(j);
-                    }
-                }
-            }
-          // Never open the whole zone: keep the plain step then.
-          if (!kept.empty() && also_opened.size() < kept.size())
-            {
-              for (const unsigned int j : also_opened)
-                next[j] = false;
-              last_update_extrapolated = !also_opened.empty();
-            }
-        }
+        extrapolate_release(nodes, rows, closed, next);
 
       // Stick or slip for the closed nodes.
       std::vector<NodeState<dim>> current(n);
@@ -230,6 +229,8 @@ namespace Common
       std::vector<NodeState<dim>> proposed = current;
       for (unsigned int j = 0; j < n; ++j)
         {
+          if (!rows.is_owned(j))
+            continue;
           proposed[j].slip_direction    = Tensor<1, dim>();
           proposed[j].turning_stiffness = 0.;
           if (!next[j])
@@ -258,59 +259,225 @@ namespace Common
       // and a mid-side node of a Q2 face trading places at the contact
       // edge, or a node at the stick-slip boundary). Then change only the
       // point with the largest complementarity violation whose change
-      // leads to a set not seen yet.
+      // leads to a set not seen yet. The codes and the history hold the
+      // owned nodes; a set is seen if it matches an entry on every rank.
       const std::vector<int> current_codes = codes(state, current);
       std::vector<int>       next_codes    = codes(state, proposed);
-      const auto             seen = [this](const std::vector<int> &set) {
-        return std::find(history.begin(), history.end(), set) != history.end();
+      const auto             seen          = [&](const std::vector<int> &set) {
+        std::vector<unsigned int> mismatch(history.size());
+        for (unsigned int i = 0; i < history.size(); ++i)
+          mismatch[i] = (history[i] != set);
+        if (distributed)
+          Utilities::MPI::sum(mismatch, comm, mismatch);
+        return std::find(mismatch.begin(), mismatch.end(), 0u) !=
+               mismatch.end();
       };
+      bool changed = next_codes != current_codes;
+      if (distributed)
+        changed =
+          Utilities::MPI::max(static_cast<unsigned int>(changed), comm) > 0;
       cycling = false;
-      if (next_codes != current_codes && seen(next_codes))
+      if (changed && seen(next_codes))
         {
-          extrapolation_enabled = false;
-          std::vector<std::pair<double, unsigned int>> violations;
-          for (unsigned int j = 0; j < n; ++j)
-            if (next_codes[j] != current_codes[j])
-              {
-                const auto [C_n, C_t] =
-                  complementarity(j, nodes, normal, friction, state);
-                violations.emplace_back((std::abs(C_n) + C_t.norm()) *
-                                          nodes[j].weight,
-                                        j);
-              }
-          std::sort(violations.rbegin(), violations.rend());
-          cycling = true;
-          for (const auto &[size, j] : violations)
-            {
-              std::vector<int> single = current_codes;
-              single[j]               = next_codes[j];
-              if (!seen(single))
+          extrapolation_enabled       = false;
+          const unsigned int j_single = single_change(nodes,
+                                                      normal,
+                                                      friction,
+                                                      state,
+                                                      current_codes,
+                                                      next_codes);
+          cycling = j_single == numbers::invalid_unsigned_int;
+          if (!cycling)
+            for (unsigned int j = 0, l = 0; j < n; ++j)
+              if (rows.is_owned(j))
                 {
-                  std::vector<NodeState<dim>> one = current;
-                  one[j].status                   = proposed[j].status;
-                  one[j].slip_direction           = proposed[j].slip_direction;
-                  one[j].turning_stiffness = proposed[j].turning_stiffness;
-                  proposed                 = one;
-                  next_codes               = single;
-                  cycling                  = false;
-                  break;
+                  if (j == j_single)
+                    {
+                      NodeState<dim> one    = current[j];
+                      one.status            = proposed[j].status;
+                      one.slip_direction    = proposed[j].slip_direction;
+                      one.turning_stiffness = proposed[j].turning_stiffness;
+                      proposed[j]           = one;
+                    }
+                  else
+                    {
+                      proposed[j]   = current[j];
+                      next_codes[l] = current_codes[l];
+                    }
+                  ++l;
                 }
-            }
         }
 
       unsigned int n_changed = 0;
-      for (unsigned int j = 0; j < n; ++j)
-        n_changed += (next_codes[j] != current_codes[j]);
+      for (unsigned int l = 0; l < next_codes.size(); ++l)
+        n_changed += (next_codes[l] != current_codes[l]);
+      if (distributed)
+        n_changed = Utilities::MPI::sum(n_changed, comm);
       // In 3D a slip direction may turn without changing the code.
       for (unsigned int j = 0; j < n; ++j)
-        {
-          NodeState<dim> &node   = state.node(j);
-          node.status            = proposed[j].status;
-          node.slip_direction    = proposed[j].slip_direction;
-          node.turning_stiffness = proposed[j].turning_stiffness;
-        }
+        if (rows.is_owned(j))
+          {
+            NodeState<dim> &node   = state.node(j);
+            node.status            = proposed[j].status;
+            node.slip_direction    = proposed[j].slip_direction;
+            node.turning_stiffness = proposed[j].turning_stiffness;
+          }
       history.push_back(next_codes);
       return n_changed;
+    }
+
+
+
+    // The opened band, mirrored about its inner end (see update()): the
+    // opened nodes of every rank, the distance of each to the closed set
+    // (the minimum over the ranks), then each rank opens the closed nodes
+    // it owns within twice that distance of an opened node.
+    template <int dim>
+    void
+    ActiveSetPolicy<dim>::extrapolate_release(
+      const std::vector<NodeKinematics<dim>> &nodes,
+      const RowPartition                     &rows,
+      const std::vector<bool>                &closed,
+      std::vector<bool>                      &next)
+    {
+      const MPI_Comm            comm        = rows.communicator();
+      const bool                distributed = rows.is_distributed();
+      const unsigned int        n           = nodes.size();
+      std::vector<unsigned int> opened, kept;
+      for (unsigned int j = 0; j < n; ++j)
+        if (!rows.is_owned(j))
+          continue;
+        else if (closed[j] && !next[j])
+          opened.push_back(j);
+        else if (next[j])
+          kept.push_back(j);
+      unsigned int n_kept = kept.size();
+      if (distributed)
+        {
+          n_kept = Utilities::MPI::sum(n_kept, comm);
+          std::vector<unsigned int> all;
+          for (const auto &part : Utilities::MPI::all_gather(comm, opened))
+            all.insert(all.end(), part.begin(), part.end());
+          std::sort(all.begin(), all.end());
+          opened = all;
+        }
+      std::vector<unsigned int> also_opened;
+      if (n_kept > 0)
+        {
+          // Nearest-point queries on an R-tree of the closed set
+          // (NearestPoints): O(n log n), not a loop over all pairs.
+          std::vector<Point<dim>> positions(n);
+          for (unsigned int j = 0; j < n; ++j)
+            positions[j] = nodes[j].position;
+          NearestPoints<dim> closed_set(positions, kept);
+          // Distance of each opened node to the closed set.
+          std::vector<double> band(opened.size());
+          for (unsigned int r = 0; r < opened.size(); ++r)
+            {
+              const unsigned int i = closed_set.nearest(positions[opened[r]]);
+              band[r]              = i == numbers::invalid_unsigned_int ?
+                                       std::numeric_limits<double>::max() :
+                                       positions[opened[r]].distance(positions[i]);
+            }
+          if (distributed)
+            Utilities::MPI::min(band, comm, band);
+          // The closed nodes within twice an opened node's band: the
+          // nearest remaining one while it lies inside, each taken out
+          // of the tree once found.
+          for (unsigned int r = 0; r < opened.size(); ++r)
+            {
+              const Point<dim> &x = positions[opened[r]];
+              for (unsigned int j = closed_set.nearest(x);
+                   j != numbers::invalid_unsigned_int &&
+                   positions[j].distance(x) < 2. * band[r] * (1. - 1e-10);
+                   j = closed_set.nearest(x))
+                {
+                  also_opened.push_back(j);
+                  closed_set.remove(j);
+                }
+            }
+        }
+      unsigned int n_also_opened = also_opened.size();
+      if (distributed)
+        n_also_opened = Utilities::MPI::sum(n_also_opened, comm);
+      // Never open the whole zone: keep the plain step then.
+      if (n_kept > 0 && n_also_opened < n_kept)
+        {
+          for (const unsigned int j : also_opened)
+            next[j] = false;
+          last_update_extrapolated = n_also_opened > 0;
+        }
+    }
+
+
+
+    // The node (of any rank) whose change alone leads to an unseen set,
+    // the one with the largest complementarity violation: each rank rates
+    // its changed nodes, with the number of nodes (over all ranks) in which
+    // each history entry differs from the current set.
+    template <int dim>
+    unsigned int
+    ActiveSetPolicy<dim>::single_change(
+      const std::vector<NodeKinematics<dim>> &nodes,
+      const NormalEnforcement<dim>           &normal,
+      const FrictionModel<dim>               &friction,
+      const ContactState<dim>                &state,
+      const std::vector<int>                 &current_codes,
+      const std::vector<int>                 &next_codes) const
+    {
+      const RowPartition       &rows        = state.rows();
+      const MPI_Comm            comm        = rows.communicator();
+      const bool                distributed = rows.is_distributed();
+      std::vector<unsigned int> differing(history.size(), 0);
+      for (unsigned int i = 0; i < history.size(); ++i)
+        for (unsigned int l = 0; l < current_codes.size(); ++l)
+          differing[i] += (history[i][l] != current_codes[l]);
+      if (distributed)
+        Utilities::MPI::sum(differing, comm, differing);
+
+      // (violation, node, 1 if its change alone leads to an unseen set).
+      std::vector<double> candidates;
+      for (unsigned int j = 0, l = 0; j < nodes.size(); ++j)
+        {
+          if (!rows.is_owned(j))
+            continue;
+          if (next_codes[l] != current_codes[l])
+            {
+              const auto [C_n, C_t] =
+                complementarity(j, nodes, normal, friction, state);
+              bool unseen = true;
+              for (unsigned int i = 0; i < history.size() && unseen; ++i)
+                unseen = !(history[i][l] == next_codes[l] &&
+                           differing[i] ==
+                             (history[i][l] != current_codes[l] ? 1u : 0u));
+              candidates.push_back((std::abs(C_n) + C_t.norm()) *
+                                   nodes[j].weight);
+              candidates.push_back(j);
+              candidates.push_back(unseen ? 1. : 0.);
+            }
+          ++l;
+        }
+      if (distributed)
+        {
+          std::vector<double> all;
+          for (const auto &part : Utilities::MPI::all_gather(comm, candidates))
+            all.insert(all.end(), part.begin(), part.end());
+          candidates = all;
+        }
+      std::vector<std::pair<double, unsigned int>> violations;
+      std::vector<unsigned int>                    unseen;
+      for (unsigned int c = 0; c + 2 < candidates.size(); c += 3)
+        {
+          const auto j = static_cast<unsigned int>(candidates[c + 1]);
+          violations.emplace_back(candidates[c], j);
+          if (candidates[c + 2] > 0.)
+            unseen.push_back(j);
+        }
+      std::sort(violations.rbegin(), violations.rend());
+      for (const auto &[size, j] : violations)
+        if (std::find(unseen.begin(), unseen.end(), j) != unseen.end())
+          return j;
+      return numbers::invalid_unsigned_int;
     }
 
 
@@ -334,16 +501,20 @@ namespace Common
     {
       if (!normal.has_multipliers())
         return 0.;
-      double sum = 0.;
+      // The owned nodes' share, summed over the ranks.
+      const RowPartition &rows = state.rows();
+      double              sum  = 0.;
       for (unsigned int j = 0; j < nodes.size(); ++j)
         {
-          if (!nodes[j].paired)
+          if (!nodes[j].paired || !rows.is_owned(j))
             continue;
           const auto [C_n, C_t] =
             complementarity(j, nodes, normal, friction, state);
           sum +=
             (C_n * C_n + C_t.norm_square()) * nodes[j].weight * nodes[j].weight;
         }
+      if (rows.is_distributed())
+        sum = Utilities::MPI::sum(sum, rows.communicator());
       return std::sqrt(sum);
     }
 
@@ -355,9 +526,16 @@ namespace Common
       const MortarCoupling<dim> &coupling,
       const ContactState<dim>   &state)
     {
-      const auto &surface = coupling.secondary_surface();
-      for (unsigned int f = 0; f < surface.n_faces(); ++f)
+      // Each rank looks at the faces of its own cells, whose nodes it
+      // holds; the answer is true if it is on any rank.
+      const RowPartition &rows    = state.rows();
+      const auto         &surface = coupling.secondary_surface();
+      bool                touches = false;
+      for (unsigned int f = 0; f < surface.n_faces() && !touches; ++f)
         {
+          if (rows.is_distributed() &&
+              !surface.face(f).cell->is_locally_owned())
+            continue;
           bool any_active = false, any_unpaired = false;
           for (const unsigned int j : surface.face(f).nodes)
             {
@@ -366,10 +544,12 @@ namespace Common
               any_unpaired = any_unpaired || (!coupling.row(j).has_partner &&
                                               coupling.row(j).weight > 0.);
             }
-          if (any_active && any_unpaired)
-            return true;
+          touches = any_active && any_unpaired;
         }
-      return false;
+      if (rows.is_distributed())
+        touches = Utilities::MPI::max(static_cast<unsigned int>(touches),
+                                      rows.communicator()) > 0;
+      return touches;
     }
 
     template class ActiveSetPolicy<2>;

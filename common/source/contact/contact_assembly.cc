@@ -44,11 +44,15 @@ namespace Common
 
     template <int dim, typename VectorType>
     std::vector<NodeKinematics<dim>>
-    node_kinematics(const MortarCoupling<dim> &coupling, const VectorType &u)
+    node_kinematics(const MortarCoupling<dim> &coupling,
+                    const RowPartition        &rows,
+                    const VectorType          &u)
     {
       std::vector<NodeKinematics<dim>> nodes = node_kinematics(coupling);
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
+          if (!rows.is_held(j))
+            continue;
           if (nodes[j].paired)
             nodes[j].weighted_gap = coupling.weighted_gap(j, u);
           nodes[j].relative_displacement = coupling.relative_displacement(j, u);
@@ -91,6 +95,7 @@ namespace Common
     template <int dim>
     void
     add_contact_sparsity(const MortarCoupling<dim>       &coupling,
+                         const RowPartition              &rows,
                          const DoFHandler<dim>           &dof_handler,
                          const AffineConstraints<double> &constraints,
                          DynamicSparsityPattern          &dsp)
@@ -101,7 +106,7 @@ namespace Common
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner)
+          if (!row.has_partner || !rows.is_held(j))
             continue;
           std::vector<types::global_dof_index> primary_dofs;
           for (const auto &entry : row.primary_weights)
@@ -188,9 +193,11 @@ namespace Common
     const MortarCoupling<dim> &);                                       \
   template std::vector<NodeKinematics<dim>> node_kinematics(            \
     const MortarCoupling<dim> &,                                        \
+    const RowPartition &,                                               \
     const Vector<double> &);                                            \
   template std::vector<NodeKinematics<dim>> node_kinematics(            \
     const MortarCoupling<dim> &,                                        \
+    const RowPartition &,                                               \
     const TrilinosWrappers::MPI::Vector &);                             \
   template void gap_gradient(const MortarCoupling<dim> &,               \
                              const unsigned int,                        \
@@ -198,6 +205,7 @@ namespace Common
                              std::vector<types::global_dof_index> &,    \
                              Vector<double> &);                         \
   template void add_contact_sparsity(const MortarCoupling<dim> &,       \
+                                     const RowPartition &,              \
                                      const DoFHandler<dim> &,           \
                                      const AffineConstraints<double> &, \
                                      DynamicSparsityPattern &);         \

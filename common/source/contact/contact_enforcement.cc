@@ -1,6 +1,8 @@
 #include <common/contact/contact_assembly.h>
 #include <common/contact/contact_enforcement.h>
 
+#include <deal.II/base/mpi.h>
+
 namespace Common
 {
   namespace Contact
@@ -27,9 +29,55 @@ namespace Common
 
     template <int dim>
     void
+    ContactEnforcement<dim>::distribute_rows(const IndexSet &owned_dofs,
+                                             const IndexSet &needed_dofs,
+                                             const MPI_Comm  communicator)
+    {
+      const unsigned int                   n = coupling.n_rows();
+      std::vector<types::global_dof_index> first_dofs(n);
+      std::vector<bool>                    needed(n, false);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const auto &dofs = coupling.secondary_surface().node(j).dofs;
+          first_dofs[j]    = dofs[0];
+          for (const auto dof : dofs)
+            needed[j] = needed[j] || needed_dofs.is_element(dof);
+        }
+      contact_state.distribute(
+        RowPartition(first_dofs, needed, owned_dofs, communicator));
+    }
+
+
+
+    template <int dim>
+    const RowPartition &
+    ContactEnforcement<dim>::rows() const
+    {
+      return contact_state.rows();
+    }
+
+
+
+    template <int dim>
+    void
+    ContactEnforcement<dim>::count_active()
+    {
+      n_active_nodes = contact_state.n_closed();
+      if (contact_state.rows().is_distributed())
+        n_active_nodes =
+          Utilities::MPI::sum(n_active_nodes,
+                              contact_state.rows().communicator());
+    }
+
+
+
+    template <int dim>
+    void
     ContactEnforcement<dim>::initialize_active_set()
     {
       policy.initialize(node_kinematics(coupling), *friction, contact_state);
+      count_active();
+      n_accepted_active = n_active_nodes;
     }
 
 
@@ -49,7 +97,8 @@ namespace Common
     void
     ContactEnforcement<dim>::commit(const VectorType &u)
     {
-      contact_state.commit(node_kinematics(coupling, u));
+      contact_state.commit(node_kinematics(coupling, contact_state.rows(), u));
+      n_accepted_active = n_active_nodes;
     }
 
 
@@ -59,6 +108,7 @@ namespace Common
     ContactEnforcement<dim>::restore()
     {
       contact_state.restore();
+      n_active_nodes = n_accepted_active;
     }
 
 
@@ -79,7 +129,11 @@ namespace Common
       const AffineConstraints<double> &constraints,
       DynamicSparsityPattern          &dsp) const
     {
-      add_contact_sparsity(coupling, dof_handler, constraints, dsp);
+      add_contact_sparsity(coupling,
+                           contact_state.rows(),
+                           dof_handler,
+                           constraints,
+                           dsp);
     }
 
 
@@ -182,10 +236,14 @@ namespace Common
     unsigned int
     ContactEnforcement<dim>::update_active_set(const VectorType &u)
     {
-      return policy.update(node_kinematics(coupling, u),
-                           *normal,
-                           *friction,
-                           contact_state);
+      const unsigned int n_changed =
+        policy.update(node_kinematics(coupling, contact_state.rows(), u),
+                      *normal,
+                      *friction,
+                      contact_state);
+      contact_state.update_ghosts();
+      count_active();
+      return n_changed;
     }
 
 
@@ -203,7 +261,9 @@ namespace Common
     double
     ContactEnforcement<dim>::complementarity_norm(const VectorType &u) const
     {
-      return policy.complementarity_norm(node_kinematics(coupling, u),
+      return policy.complementarity_norm(node_kinematics(coupling,
+                                                         contact_state.rows(),
+                                                         u),
                                          *normal,
                                          *friction,
                                          contact_state);
@@ -271,7 +331,7 @@ namespace Common
     unsigned int
     ContactEnforcement<dim>::n_active() const
     {
-      return contact_state.n_closed();
+      return n_active_nodes;
     }
 
 

@@ -1,5 +1,6 @@
 #include <common/contact/contact_postprocessor.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <algorithm>
@@ -43,12 +44,16 @@ namespace Common
                     const TrilinosWrappers::MPI::Vector &bulk_residual,
                     const unsigned int                   axis)
     {
+      // Each rank evaluates the paired nodes it owns; every rank gets all
+      // of them, in the order of the nodes, before the sort along the axis
+      // (the serial order also where positions tie).
       std::vector<ContactPointResult<dim>> profile;
-      const auto &surface = coupling.secondary_surface();
+      const auto         &surface = coupling.secondary_surface();
+      const RowPartition &rows    = enforcement.rows();
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
-          if (!row.has_partner)
+          if (!row.has_partner || !rows.is_owned(j))
             continue;
           const auto          &node = surface.node(j);
           const Tensor<1, dim> t    = tangent_of(row.normal);
@@ -79,6 +84,60 @@ namespace Common
           result.status = to_string(enforcement.status(j));
           profile.push_back(result);
         }
+      if (rows.is_distributed())
+        {
+          // Node, pressure, tangential traction, slip, relative
+          // displacement, gap, status, then the normal, traction, slip and
+          // relative displacement vectors.
+          constexpr unsigned int stride = 7 + 4 * dim;
+          std::vector<double>    local;
+          for (const auto &p : profile)
+            {
+              local.insert(local.end(),
+                           {static_cast<double>(p.node),
+                            p.pressure,
+                            p.tangential_traction,
+                            p.slip,
+                            p.relative_displacement,
+                            p.gap,
+                            static_cast<double>(enforcement.status(p.node))});
+              for (const auto *v : {&p.normal,
+                                    &p.tangential_traction_vector,
+                                    &p.slip_vector,
+                                    &p.relative_displacement_vector})
+                for (unsigned int c = 0; c < dim; ++c)
+                  local.push_back((*v)[c]);
+            }
+          profile.clear();
+          for (const auto &part :
+               Utilities::MPI::all_gather(rows.communicator(), local))
+            for (unsigned int i = 0; i + stride <= part.size(); i += stride)
+              {
+                ContactPointResult<dim> result;
+                result.node     = static_cast<unsigned int>(part[i]);
+                result.position = surface.node(result.node).reference_position;
+                result.pressure = part[i + 1];
+                result.tangential_traction   = part[i + 2];
+                result.slip                  = part[i + 3];
+                result.relative_displacement = part[i + 4];
+                result.gap                   = part[i + 5];
+                result.status                = to_string(
+                  static_cast<PointStatus>(static_cast<int>(part[i + 6])));
+                unsigned int k = i + 7;
+                for (auto *v : {&result.normal,
+                                &result.tangential_traction_vector,
+                                &result.slip_vector,
+                                &result.relative_displacement_vector})
+                  for (unsigned int c = 0; c < dim; ++c)
+                    (*v)[c] = part[k++];
+                profile.push_back(result);
+              }
+          std::sort(profile.begin(),
+                    profile.end(),
+                    [](const auto &a, const auto &b) {
+                      return a.node < b.node;
+                    });
+        }
       std::sort(profile.begin(),
                 profile.end(),
                 [axis](const auto &a, const auto &b) {
@@ -94,13 +153,20 @@ namespace Common
     total_contact_force(const MortarCoupling<dim>     &coupling,
                         const ContactEnforcement<dim> &enforcement)
     {
-      Tensor<1, dim> force;
+      // The owned nodes' share, summed over the ranks.
+      const RowPartition &rows = enforcement.rows();
+      Tensor<1, dim>      force;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        force -= enforcement.pressure(j) * coupling.row(j).weight *
-                 coupling.row(j).normal;
+        if (rows.is_owned(j))
+          force -= enforcement.pressure(j) * coupling.row(j).weight *
+                   coupling.row(j).normal;
       if (enforcement.has_friction())
         for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-          force += coupling.row(j).weight * enforcement.tangential_traction(j);
+          if (rows.is_owned(j))
+            force +=
+              coupling.row(j).weight * enforcement.tangential_traction(j);
+      if (rows.is_distributed())
+        force = Utilities::MPI::sum(force, rows.communicator());
       return force;
     }
 
@@ -149,6 +215,8 @@ namespace Common
                {"contact_slip", {}}};
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
+          if (!enforcement.rows().is_held(j))
+            continue;
           const types::global_dof_index dof =
             coupling.secondary_surface().node(j).dofs[0];
           const Tensor<1, dim> t     = tangent_of(coupling.row(j).normal);
@@ -200,10 +268,15 @@ namespace Common
       const auto           &surface = coupling.secondary_surface();
       const QGauss<dim - 1> quadrature(surface.base_element().degree + 4);
       std::vector<double>   N;
-      double                error_sq = 0., reference_sq = 0.;
+      // The faces of each rank's own cells (whose nodes it holds), summed
+      // over the ranks.
+      const RowPartition &rows     = enforcement.rows();
+      double              error_sq = 0., reference_sq = 0.;
       for (unsigned int f = 0; f < surface.n_faces(); ++f)
         {
           const auto &face = surface.face(f);
+          if (rows.is_distributed() && !face.cell->is_locally_owned())
+            continue;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               surface.shape_values(f, quadrature.point(q), N);
@@ -220,6 +293,13 @@ namespace Common
               error_sq += std::pow(p_h - p_ref, 2) * JxW;
               reference_sq += p_ref * p_ref * JxW;
             }
+        }
+      if (rows.is_distributed())
+        {
+          std::vector<double> sums{error_sq, reference_sq};
+          Utilities::MPI::sum(sums, rows.communicator(), sums);
+          error_sq     = sums[0];
+          reference_sq = sums[1];
         }
       reference_norm = std::sqrt(reference_sq);
       return std::sqrt(error_sq);

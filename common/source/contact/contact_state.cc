@@ -1,8 +1,12 @@
 #include <common/contact/contact_search.h>
 #include <common/contact/contact_state.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <map>
 #include <memory>
 
 namespace Common
@@ -57,6 +61,65 @@ namespace Common
 
 
     template <int dim>
+    void
+    ContactState<dim>::distribute(const RowPartition &rows)
+    {
+      partition = rows;
+    }
+
+
+
+    template <int dim>
+    const RowPartition &
+    ContactState<dim>::rows() const
+    {
+      return partition;
+    }
+
+
+
+    // Owners send, for each ghost row a rank holds, the node's status,
+    // slip direction and turning stiffness: 2 + dim numbers per row after
+    // its index.
+    template <int dim>
+    void
+    ContactState<dim>::update_ghosts()
+    {
+      if (!partition.is_distributed())
+        return;
+      std::map<unsigned int, std::vector<double>> send;
+      for (const auto &[rank, rows] : partition.ghost_holders())
+        {
+          std::vector<double> &data = send[rank];
+          data.reserve(rows.size() * (3 + dim));
+          for (const unsigned int j : rows)
+            {
+              data.push_back(j);
+              data.push_back(static_cast<double>(current[j].status));
+              data.push_back(current[j].turning_stiffness);
+              for (unsigned int d = 0; d < dim; ++d)
+                data.push_back(current[j].slip_direction[d]);
+            }
+        }
+      const auto received =
+        Utilities::MPI::some_to_some(partition.communicator(), send);
+      for (const auto &[rank, data] : received)
+        for (unsigned int i = 0; i + 3 + dim <= data.size(); i += 3 + dim)
+          {
+            const unsigned int j = static_cast<unsigned int>(data[i]);
+            Assert(partition.is_held(j) && !partition.is_owned(j),
+                   ExcInternalError());
+            current[j].status =
+              static_cast<PointStatus>(static_cast<int>(data[i + 1]));
+            current[j].turning_stiffness = data[i + 2];
+            for (unsigned int d = 0; d < dim; ++d)
+              current[j].slip_direction[d] = data[i + 3 + d];
+          }
+    }
+
+
+
+    template <int dim>
     const NodeState<dim> &
     ContactState<dim>::node(const unsigned int j) const
     {
@@ -96,11 +159,10 @@ namespace Common
     unsigned int
     ContactState<dim>::n_closed() const
     {
-      return std::count_if(current.begin(),
-                           current.end(),
-                           [](const NodeState<dim> &s) {
-                             return s.status != PointStatus::open;
-                           });
+      unsigned int n = 0;
+      for (unsigned int j = 0; j < current.size(); ++j)
+        n += (partition.is_owned(j) && current[j].status != PointStatus::open);
+      return n;
     }
 
 
@@ -168,17 +230,18 @@ namespace Common
       // A node that closed during the step needs the distances to the
       // nearest other paired node, to the nearest one closed at the start
       // and to the nearest one open at the end of the step: one R-tree
-      // query each (NearestPoints), not a loop over all nodes.
+      // query each (NearestPoints) over the nodes this rank owns, not a
+      // loop over all nodes, and the minimum over the ranks.
       std::vector<Point<dim>>   positions(n);
       std::vector<unsigned int> paired, closed_at_start, open_at_end;
-      bool                      any_closing = false;
+      std::vector<unsigned int> closing;
       for (unsigned int j = 0; j < n; ++j)
         {
           positions[j] = nodes[j].position;
-          any_closing =
-            any_closing || (current[j].status != PointStatus::open &&
-                            accepted[j].status == PointStatus::open);
-          if (!nodes[j].paired)
+          if (partition.is_held(j) && current[j].status != PointStatus::open &&
+              accepted[j].status == PointStatus::open)
+            closing.push_back(j);
+          if (!nodes[j].paired || !partition.is_owned(j))
             continue;
           paired.push_back(j);
           if (accepted[j].status != PointStatus::open)
@@ -186,26 +249,53 @@ namespace Common
           if (current[j].status == PointStatus::open)
             open_at_end.push_back(j);
         }
-      std::unique_ptr<NearestPoints<dim>> near_paired, near_closed, near_open;
-      if (any_closing)
+      // Every rank's closing nodes, in increasing order.
+      std::vector<unsigned int> queries = closing;
+      if (partition.is_distributed())
         {
-          near_paired = std::make_unique<NearestPoints<dim>>(positions, paired);
-          near_closed =
-            std::make_unique<NearestPoints<dim>>(positions, closed_at_start);
-          near_open =
-            std::make_unique<NearestPoints<dim>>(positions, open_at_end);
+          queries.clear();
+          for (const auto &part :
+               Utilities::MPI::all_gather(partition.communicator(), closing))
+            queries.insert(queries.end(), part.begin(), part.end());
+          std::sort(queries.begin(), queries.end());
+          queries.erase(std::unique(queries.begin(), queries.end()),
+                        queries.end());
         }
-      // Distance from node j to the nearest other node of a set.
-      const auto distance_to = [&positions](const NearestPoints<dim> &set,
-                                            const unsigned int        j) {
-        const unsigned int i = set.nearest(positions[j], j);
-        return i == numbers::invalid_unsigned_int ?
-                 std::numeric_limits<double>::max() :
-                 positions[j].distance(positions[i]);
-      };
+      // Per query: spacing, distance to the closed set at the start and
+      // to the open set at the end.
+      std::map<unsigned int, std::array<double, 3>> distances;
+      if (!queries.empty())
+        {
+          const NearestPoints<dim> near_paired(positions, paired);
+          const NearestPoints<dim> near_closed(positions, closed_at_start);
+          const NearestPoints<dim> near_open(positions, open_at_end);
+          // Distance from node j to the nearest other node of a set.
+          const auto distance_to = [&positions](const NearestPoints<dim> &set,
+                                                const unsigned int        j) {
+            const unsigned int i = set.nearest(positions[j], j);
+            return i == numbers::invalid_unsigned_int ?
+                     std::numeric_limits<double>::max() :
+                     positions[j].distance(positions[i]);
+          };
+          std::vector<double> local(3 * queries.size());
+          for (unsigned int q = 0; q < queries.size(); ++q)
+            {
+              local[3 * q]     = distance_to(near_paired, queries[q]);
+              local[3 * q + 1] = distance_to(near_closed, queries[q]);
+              local[3 * q + 2] = distance_to(near_open, queries[q]);
+            }
+          std::vector<double> global = local;
+          if (partition.is_distributed())
+            Utilities::MPI::min(local, partition.communicator(), global);
+          for (unsigned int q = 0; q < queries.size(); ++q)
+            distances[queries[q]] = {
+              {global[3 * q], global[3 * q + 1], global[3 * q + 2]}};
+        }
 
       for (unsigned int j = 0; j < n; ++j)
         {
+          if (!partition.is_held(j))
+            continue;
           const Tensor<1, dim> &relative = nodes[j].relative_displacement;
           if (current[j].status != PointStatus::open)
             {
@@ -217,9 +307,10 @@ namespace Common
                   // after the contact edge passed the node, with the edge
                   // midway between the last closed and first open nodes at
                   // the start (old) and end (new) of the step.
-                  const double spacing = distance_to(*near_paired, j);
-                  const double d_old   = distance_to(*near_closed, j);
-                  const double d_new   = distance_to(*near_open, j);
+                  const auto  &d       = distances.at(j);
+                  const double spacing = d[0];
+                  const double d_old   = d[1];
+                  const double d_new   = d[2];
                   if (d_old < std::numeric_limits<double>::max() &&
                       d_new < std::numeric_limits<double>::max() &&
                       d_old + d_new > spacing)

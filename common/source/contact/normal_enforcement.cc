@@ -207,8 +207,13 @@ namespace Common
       last_diagnostics                      = ConstraintDiagnostics();
       unsigned int example_stick            = numbers::invalid_unsigned_int,
                    example_unconstrained    = numbers::invalid_unsigned_int;
+      // The rows this rank holds: its own and the ghost rows of its cells.
+      // The diagnostics count the owned ones, summed over the ranks.
+      const RowPartition &rows = state.rows();
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
+          if (!rows.is_held(j))
+            continue;
           const PointStatus status = state.node(j).status;
           if (status == PointStatus::open)
             continue;
@@ -289,9 +294,12 @@ namespace Common
                                      target_defect,
                                      constraints))
                 {
-                  ++last_diagnostics.n_stick_without_normal;
-                  if (example_stick == numbers::invalid_unsigned_int)
-                    example_stick = j;
+                  if (rows.is_owned(j))
+                    {
+                      ++last_diagnostics.n_stick_without_normal;
+                      if (example_stick == numbers::invalid_unsigned_int)
+                        example_stick = j;
+                    }
                   continue;
                 }
             }
@@ -308,9 +316,12 @@ namespace Common
             {
               // Every component fixed, or none along the normal: no
               // constraint can act on the node.
-              ++last_diagnostics.n_unconstrained;
-              if (example_unconstrained == numbers::invalid_unsigned_int)
-                example_unconstrained = j;
+              if (rows.is_owned(j))
+                {
+                  ++last_diagnostics.n_unconstrained;
+                  if (example_unconstrained == numbers::invalid_unsigned_int)
+                    example_unconstrained = j;
+                }
               continue;
             }
 
@@ -333,6 +344,18 @@ namespace Common
                                         coupling.weighted_gap(j, u) * scale);
         }
 
+      if (rows.is_distributed())
+        {
+          const MPI_Comm comm = rows.communicator();
+          last_diagnostics.n_stick_without_normal =
+            Utilities::MPI::sum(last_diagnostics.n_stick_without_normal, comm);
+          last_diagnostics.n_unconstrained =
+            Utilities::MPI::sum(last_diagnostics.n_unconstrained, comm);
+          // The first node, as in serial: the smallest index of any rank.
+          example_stick = Utilities::MPI::min(example_stick, comm);
+          example_unconstrained =
+            Utilities::MPI::min(example_unconstrained, comm);
+        }
       if (last_diagnostics.n_stick_without_normal > 0 && !warned_stick)
         {
           warned_stick = true;
@@ -391,6 +414,8 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
+          if (!state.rows().is_held(j))
+            continue;
           const MortarRow<dim> &row  = coupling.row(j);
           NodeState<dim>       &node = state.node(j);
           node.tangential_traction   = Tensor<1, dim>();
@@ -520,6 +545,8 @@ namespace Common
     {
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
+          if (!state.rows().is_held(j))
+            continue;
           const MortarRow<dim> &row  = coupling.row(j);
           NodeState<dim>       &node = state.node(j);
           node.tangential_traction   = Tensor<1, dim>();

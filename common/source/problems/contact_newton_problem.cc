@@ -16,6 +16,31 @@ namespace Common
   {
     using namespace dealii;
 
+    namespace
+    {
+      /** @p dofs and the DoFs that the lines of @p constraints for them
+       * refer to. */
+      IndexSet
+      with_constraint_targets(const IndexSet                  &dofs,
+                              const AffineConstraints<double> &constraints)
+      {
+        std::vector<types::global_dof_index> targets;
+        for (const auto &line : constraints.get_lines())
+          if (dofs.is_element(line.index))
+            for (const auto &entry : line.entries)
+              targets.push_back(entry.first);
+        std::sort(targets.begin(), targets.end());
+        targets.erase(std::unique(targets.begin(), targets.end()),
+                      targets.end());
+        IndexSet result = dofs;
+        result.add_indices(targets.begin(), targets.end());
+        result.compress();
+        return result;
+      }
+    } // namespace
+
+
+
     template <int dim>
     ContactNewtonProblem<dim>::ContactNewtonProblem(
       const DoFHandler<dim>                    &dof_handler,
@@ -55,6 +80,14 @@ namespace Common
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            geometry.coupling(),
                                                            reference_modulus);
+      // The rows this rank holds: those of its own secondary nodes and of
+      // the nodes its cells need (their DoFs and the targets of their
+      // constraints, such as the parents of a hanging node).
+      locally_active_dofs = DoFTools::extract_locally_active_dofs(dof_handler);
+      contact_enforcement->distribute_rows(
+        locally_owned_dofs,
+        with_constraint_targets(locally_active_dofs, base_constraints),
+        mpi_communicator);
       contact_enforcement->mark_constrained_nodes(base_constraints);
       contact_enforcement->initialize_active_set();
       solve_times.contact_setup = IO::seconds_since(start);
@@ -82,41 +115,38 @@ namespace Common
     // The DoFs this rank reads: those of its own cells (owned ones and the
     // partition interface; the shared triangulation makes every other cell
     // a ghost, so deal.II's locally relevant set would be every DoF), the
-    // DoFs of the contact pair
-    // (every rank evaluates every mortar row, so that all decide the
-    // active set alike) and the DoFs that the constraints of those lines
-    // refer to (a rigid body's reference node). Nothing else is ghosted.
+    // DoFs of the contact rows it holds (its own secondary nodes and those
+    // its cells need) with their primary nodes, and the DoFs that the
+    // constraints of those lines refer to (a rigid body's reference node).
+    // Nothing else is ghosted.
     template <int dim>
     void
     ContactNewtonProblem<dim>::setup_stored_dofs(
       const AffineConstraints<double> &base_constraints)
     {
-      const IndexSet partition_relevant =
-        DoFTools::extract_locally_active_dofs(dof_handler);
-      IndexSet contact_dofs(dof_handler.n_dofs());
+      const IndexSet &partition_relevant = locally_active_dofs;
+      IndexSet        contact_dofs(dof_handler.n_dofs());
       {
         const auto                          &coupling = geometry.coupling();
+        const auto                          &rows = contact_enforcement->rows();
         std::vector<types::global_dof_index> dofs;
         for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-          for (const auto dof : coupling.secondary_surface().node(j).dofs)
-            dofs.push_back(dof);
-        for (unsigned int k = 0; k < coupling.n_primary_nodes(); ++k)
-          for (const auto dof : coupling.primary_node(k).dofs)
-            dofs.push_back(dof);
+          {
+            if (!rows.is_held(j))
+              continue;
+            for (const auto dof : coupling.secondary_surface().node(j).dofs)
+              dofs.push_back(dof);
+            for (const auto &[k, M] : coupling.row(j).primary_weights)
+              for (const auto dof : coupling.primary_node(k).dofs)
+                dofs.push_back(dof);
+          }
         std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         contact_dofs.add_indices(dofs.begin(), dofs.end());
       }
       IndexSet relevant = partition_relevant;
       relevant.add_indices(contact_dofs);
-      {
-        std::vector<types::global_dof_index> targets;
-        for (const auto &line : base_constraints.get_lines())
-          if (relevant.is_element(line.index))
-            for (const auto &entry : line.entries)
-              targets.push_back(entry.first);
-        std::sort(targets.begin(), targets.end());
-        relevant.add_indices(targets.begin(), targets.end());
-      }
+      relevant = with_constraint_targets(relevant, base_constraints);
       relevant.compress();
 
       stored_dof_counts.n_owned = locally_owned_dofs.n_elements();

@@ -11,6 +11,11 @@
  * the laws through their interfaces (NormalEnforcement, FrictionModel): it
  * needs no mesh.
  *
+ * With MPI (ContactState::rows()) each rank decides the nodes it owns; the
+ * counts of changed nodes, the choice of the nearest node of the initial
+ * set, the extrapolated release, the cycling test and the norm are
+ * collectives over the rows' communicator, and give the serial results.
+ *
  * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
  * S. Hueeber, G. Stadler, B. Wohlmuth, SIAM J. Sci. Comput. 30 (2008)
  * 572-596.
@@ -69,7 +74,8 @@ namespace Common
        * axis node of an axisymmetric Q2 mesh, which has no ring measure),
        * the paired node of positive weight with the smallest gap closes
        * too; the iteration opens it if it carries no pressure. Resets
-       * @p state (ContactState::reset()).
+       * @p state (ContactState::reset()); sets the nodes this rank holds
+       * (collective).
        */
       void
       initialize(const std::vector<NodeKinematics<dim>> &nodes,
@@ -101,8 +107,12 @@ namespace Common
        * point with the largest complementarity violation is changed,
        * choosing one that leads to an unseen set; is_cycling() reports the
        * case where none exists.
+       *
+       * Updates the nodes this rank owns (the ghost nodes follow with
+       * ContactState::update_ghosts()); collective.
        * @param[in] nodes Kinematics of the nodes at the current iterate.
-       * @return Number of nodes whose status (or slip sense) changed.
+       * @return Number of nodes (over all ranks) whose status (or slip
+       * sense) changed.
        */
       unsigned int
       update(const std::vector<NodeKinematics<dim>> &nodes,
@@ -116,8 +126,8 @@ namespace Common
       is_cycling() const;
 
       /** @brief Norm of the normal and tangential complementarity
-       * functions weighted by D_j (N) over the paired nodes; zero without
-       * multipliers (penalty). */
+       * functions weighted by D_j (N) over the paired nodes of all ranks;
+       * zero without multipliers (penalty). Collective. */
       double
       complementarity_norm(const std::vector<NodeKinematics<dim>> &nodes,
                            const NormalEnforcement<dim>           &normal,
@@ -126,17 +136,40 @@ namespace Common
 
       /** @brief True if a closed node of @p state neighbours (shares a
        * face with) an unpaired node of positive weight: the contact zone
-       * has reached the edge of the search region. */
+       * has reached the edge of the search region. Collective. */
       static bool
       touches_search_edge(const MortarCoupling<dim> &coupling,
                           const ContactState<dim>   &state);
 
     private:
-      /** Active-set code of every node: status and, along a single free
-       * tangent, the sense of the slip direction. Used to detect cycling. */
+      /** Active-set code of every node this rank owns, in order: status
+       * and, along a single free tangent, the sense of the slip direction.
+       * Used to detect cycling. */
       std::vector<int>
       codes(const ContactState<dim>           &state,
             const std::vector<NodeState<dim>> &nodes) const;
+
+      /** The extrapolated release of update(): clears @p next of the
+       * owned closed nodes within twice the band of an opened node, unless
+       * that would open the whole zone (collective). */
+      void
+      extrapolate_release(const std::vector<NodeKinematics<dim>> &nodes,
+                          const RowPartition                     &rows,
+                          const std::vector<bool>                &closed,
+                          std::vector<bool>                      &next);
+
+      /** The node whose change alone, of those that change from
+       * @p current_codes to @p next_codes, leads to a set not in the
+       * history and has the largest complementarity violation (the same on
+       * every rank); numbers::invalid_unsigned_int if there is none
+       * (collective). */
+      unsigned int
+      single_change(const std::vector<NodeKinematics<dim>> &nodes,
+                    const NormalEnforcement<dim>           &normal,
+                    const FrictionModel<dim>               &friction,
+                    const ContactState<dim>                &state,
+                    const std::vector<int>                 &current_codes,
+                    const std::vector<int>                 &next_codes) const;
 
       /** Normal (MPa) and tangential (MPa) complementarity functions of
        * node j. */

@@ -12,6 +12,7 @@
 
 #include <common/contact/contact_state.h>
 #include <common/contact/mortar_coupling.h>
+#include <common/contact/row_partition.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -41,13 +42,17 @@ namespace Common
     node_kinematics(const MortarCoupling<dim> &coupling);
 
     /**
-     * @brief Kinematics of every secondary node for the displacement
+     * @brief Kinematics of the secondary nodes for the displacement
      * @p u (mm, ghosted): weighted gap (paired nodes only) and relative
-     * displacement.
+     * displacement, evaluated at the rows this rank holds (@p rows; @p u
+     * must be readable at their DoFs and those of their primary nodes),
+     * the geometry at every row.
      */
     template <int dim, typename VectorType>
     std::vector<NodeKinematics<dim>>
-    node_kinematics(const MortarCoupling<dim> &coupling, const VectorType &u);
+    node_kinematics(const MortarCoupling<dim> &coupling,
+                    const RowPartition        &rows,
+                    const VectorType          &u);
 
     /**
      * @brief DoFs of secondary node j followed by the DoFs of its primary
@@ -71,11 +76,13 @@ namespace Common
      * owned cell, its DoFs together with the primary DoFs of every paired
      * secondary node of the cell, all coupled with each other, and
      * distributed through @p constraints (hanging nodes, Dirichlet
-     * conditions).
+     * conditions). Reads the rows this rank holds (@p rows), which cover
+     * the secondary nodes of its cells.
      */
     template <int dim>
     void
     add_contact_sparsity(const MortarCoupling<dim>               &coupling,
+                         const RowPartition                      &rows,
                          const dealii::DoFHandler<dim>           &dof_handler,
                          const dealii::AffineConstraints<double> &constraints,
                          dealii::DynamicSparsityPattern          &dsp);

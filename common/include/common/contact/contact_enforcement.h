@@ -39,6 +39,11 @@
  * The tangential traction follows from the residual like the pressure,
  * \f$t_j = -(I - n_j n_j^T) r_j / D_j\f$.
  *
+ * With MPI the rows are distributed (distribute_rows(), RowPartition):
+ * each rank decides, assembles and reports the nodes it owns, holds the
+ * ghost rows its cells need for their constraints, and the per-node
+ * accessors (status(), pressure(), ...) are valid at the rows it holds.
+ *
  * Reference: S. Hueeber, B. Wohlmuth, CMAME 194 (2005) 3147-3166;
  * A. Popp et al., IJNME 83 (2010) 1428-1465; S. Hueeber, G. Stadler,
  * B. Wohlmuth, SIAM J. Sci. Comput. 30 (2008) 572-596.
@@ -53,6 +58,7 @@
 #include <common/contact/friction_model.h>
 #include <common/contact/mortar_coupling.h>
 #include <common/contact/normal_enforcement.h>
+#include <common/contact/row_partition.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -89,6 +95,24 @@ namespace Common
                          const double               reference_modulus);
 
       /**
+       * @brief Distribute the rows over the MPI ranks (RowPartition): this
+       * rank owns the rows of the secondary nodes whose first DoF is in
+       * @p owned_dofs, and holds as ghost rows those of the other nodes
+       * with a DoF in @p needed_dofs (the DoFs of its cells and the
+       * targets of their constraints). Without this call every row is
+       * owned (serial). Call after the constructor, before
+       * initialize_active_set(); collective.
+       */
+      void
+      distribute_rows(const dealii::IndexSet &owned_dofs,
+                      const dealii::IndexSet &needed_dofs,
+                      const MPI_Comm          communicator);
+
+      /** @brief The rows this rank owns and holds. */
+      const RowPartition &
+      rows() const;
+
+      /**
        * @brief Start the active set from the geometry of the coupling:
        * nodes that touch (pointwise gap <= 1e-8 h) are active. A body that
        * only touches its partner is thereby held from the first iteration
@@ -97,7 +121,7 @@ namespace Common
        * touches at the axis node of an axisymmetric Q2 mesh, which has no
        * ring measure), the paired node of positive weight with the
        * smallest gap starts active too; the semismooth Newton iteration
-       * opens it if it carries no pressure.
+       * opens it if it carries no pressure. Collective.
        */
       void
       initialize_active_set();
@@ -255,7 +279,11 @@ namespace Common
        * point with the largest complementarity violation is changed,
        * choosing one that leads to an unseen set; is_cycling() reports the
        * case where none exists.
-       * @return Number of nodes whose status (or slip direction) changed.
+       *
+       * Each rank decides the nodes it owns and then receives the status
+       * of its ghost nodes from their owners; collective.
+       * @return Number of nodes (over all ranks) whose status (or slip
+       * direction) changed.
        */
       unsigned int
       update_active_set(const VectorType &u);
@@ -266,7 +294,7 @@ namespace Common
       is_cycling() const;
 
       /** @brief Norm of the normal and tangential complementarity
-       * functions weighted by D_j (N). */
+       * functions weighted by D_j (N), over all ranks; collective. */
       double
       complementarity_norm(const VectorType &u) const;
 
@@ -297,12 +325,14 @@ namespace Common
       bool
       is_active(const unsigned int j) const;
 
-      /** @brief Number of active nodes. */
+      /** @brief Number of active nodes over all ranks (counted when the
+       * active set was last set, so not a collective). */
       unsigned int
       n_active() const;
 
       /** @brief True if an active node neighbours an unpaired node: the
-       * contact zone has reached the edge of the search region. */
+       * contact zone has reached the edge of the search region.
+       * Collective. */
       bool
       touches_search_edge() const;
 
@@ -338,6 +368,13 @@ namespace Common
       const std::unique_ptr<NormalEnforcement<dim>> normal;
       const std::unique_ptr<FrictionModel<dim>>     friction;
       ActiveSetPolicy<dim>                          policy;
+      /** Active nodes over all ranks, now and at the last accepted step. */
+      unsigned int n_active_nodes    = 0;
+      unsigned int n_accepted_active = 0;
+
+      /** Count the active nodes over all ranks (collective). */
+      void
+      count_active();
     };
   } // namespace Contact
 } // namespace Common

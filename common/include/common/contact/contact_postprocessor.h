@@ -71,7 +71,8 @@ namespace Common
 
     /**
      * @brief Results at every paired secondary node, sorted by the
-     * coordinate @p axis of the reference position.
+     * coordinate @p axis of the reference position: evaluated by the rank
+     * that owns each node and gathered on every rank (collective).
      * @param[in] bulk_residual f_ext - f_int (N, ghosted): gives the
      * tangential traction without friction (the traction that would be
      * needed to hold the node; zero at convergence).
@@ -91,6 +92,7 @@ namespace Common
      * "contact_status" (0 open, 1 stick, 2 slip), "tangential_traction"
      * (MPa, along tangent_of() the normal; in 3D its magnitude) and
      * "contact_slip" (slip accumulated in contact, mm, same convention).
+     * With MPI, the nodes this rank holds (those of its own cells).
      */
     template <int dim>
     std::vector<
@@ -114,7 +116,8 @@ namespace Common
     /**
      * @brief Total contact force on the secondary surface,
      * \f$\sum_j D_j(-\lambda_j n_j + t_j)\f$ with the tangential
-     * tractions t_j of friction (N, or N/mm in plane strain).
+     * tractions t_j of friction (N, or N/mm in plane strain): the owned
+     * nodes' share, summed over the ranks (collective).
      */
     template <int dim>
     dealii::Tensor<1, dim>
@@ -140,7 +143,9 @@ namespace Common
     /**
      * @brief L2 norm over the secondary surface of
      * \f$p_h - p_{ref}\f$, where \f$p_h = \sum_j \lambda_j N_j\f$
-     * interpolates the nodal pressures (MPa mm^((dim-1)/2)).
+     * interpolates the nodal pressures (MPa mm^((dim-1)/2)). With MPI each
+     * rank integrates over the faces of its own cells and the squares are
+     * summed over the ranks (collective).
      * @param[out] reference_norm The L2 norm of p_ref over the same
      * surface.
      */

@@ -12,11 +12,17 @@
  * gathered from the mortar rows by node_kinematics()
  * (contact_assembly.h), so a finite-strain contact, whose rows change with
  * the configuration, can keep its history here too.
+ *
+ * With MPI the nodes are distributed (RowPartition): the entries of the
+ * rows a rank holds are valid there, those of its owned rows are decided
+ * there, and the state of its ghost rows is copied from their owners
+ * (update_ghosts()).
  */
 #ifndef common_contact_contact_state_h
 #define common_contact_contact_state_h
 
 #include <common/contact/free_directions.h>
+#include <common/contact/row_partition.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -117,6 +123,23 @@ namespace Common
       const FreeDirections<dim> &
       directions() const;
 
+      /** @brief Distribute the nodes over the MPI ranks as @p rows says
+       * (by default every node is owned: serial). */
+      void
+      distribute(const RowPartition &rows);
+
+      /** @brief The rows this rank owns and holds. */
+      const RowPartition &
+      rows() const;
+
+      /**
+       * @brief Copy status, slip direction and turning stiffness of each
+       * ghost row from the rank that owns it (collective; nothing in
+       * serial).
+       */
+      void
+      update_ghosts();
+
       /** @brief State of node @p j in the current iterate. */
       const NodeState<dim> &
       node(const unsigned int j) const;
@@ -134,7 +157,8 @@ namespace Common
       bool
       is_closed(const unsigned int j) const;
 
-      /** @brief Number of closed nodes. */
+      /** @brief Number of closed nodes among those this rank owns (all
+       * in serial). */
       unsigned int
       n_closed() const;
 
@@ -174,9 +198,11 @@ namespace Common
        * increment after the contact edge passed it; the edge is taken
        * midway between the last closed and the first open node at the
        * start and at the end of the step, and assumed to move uniformly
-       * within the step.
+       * within the step. Updates the rows this rank holds; the distances
+       * to the nearest nodes are minima over the ranks (collective).
        * @param[in] nodes Kinematics of every node at the converged
-       * displacement of the step.
+       * displacement of the step (valid at the rows this rank holds;
+       * positions and pairing at every row).
        */
       void
       commit(const std::vector<NodeKinematics<dim>> &nodes);
@@ -188,6 +214,7 @@ namespace Common
 
     private:
       const FreeDirections<dim>          &free_directions;
+      RowPartition                        partition;
       std::vector<NodeState<dim>>         current;
       std::vector<NodeState<dim>>         accepted;
       std::vector<dealii::Tensor<1, dim>> accepted_relative;

@@ -91,8 +91,9 @@ namespace Common
       /**
        * @brief Add the constraints of the closed nodes of @p state on the
        * Newton increment to @p constraints, which must already hold the
-       * Dirichlet constraints (it is not closed here). Nothing for a
-       * penalty.
+       * Dirichlet constraints (it is not closed here): for the nodes this
+       * rank holds (ContactState::rows()). Nothing for a penalty. May be
+       * collective (the diagnostics are summed over the ranks).
        * @param[in] u Current displacement (ghosted).
        */
       virtual void
@@ -119,7 +120,7 @@ namespace Common
       /**
        * @brief Set the pressures of the current iterate in @p state (zero
        * on open nodes), and with @p with_friction the tangential tractions
-       * (zero otherwise).
+       * (zero otherwise), at the nodes this rank holds.
        * @param[in] u Current displacement (ghosted).
        * @param[in] bulk_residual f_ext - f_int at @p u (N, ghosted),
        * condensed with the Dirichlet and hanging-node constraints.
@@ -136,7 +137,8 @@ namespace Common
 
     /**
      * @brief Closed nodes whose constraints the last
-     * DualLagrangeEnforcement::add_constraints() could not set up in full.
+     * DualLagrangeEnforcement::add_constraints() could not set up in full
+     * (over all ranks).
      */
     struct ConstraintDiagnostics
     {

@@ -87,8 +87,10 @@ namespace Common
       dealii::types::global_dof_index n_owned = 0;
       /** Ghosts on the rank's own cells (the partition interface). */
       dealii::types::global_dof_index n_partition_ghosts = 0;
-      /** Further ghosts: DoFs of the contact pair and the DoFs their
-       * constraints refer to (the contact interface). */
+      /** Further ghosts: DoFs of the contact rows the rank holds (its own
+       * secondary nodes and those its cells need, with their primary
+       * nodes) and the DoFs their constraints refer to (the contact
+       * interface). */
       dealii::types::global_dof_index n_contact_ghosts = 0;
     };
 
@@ -205,9 +207,9 @@ namespace Common
       times() const;
 
     private:
-      /** The DoFs this rank stores (owned, partition ghosts, the contact
-       * pair's DoFs and the targets of their constraints), the Dirichlet
-       * and hanging-node constraints of those DoFs out of
+      /** The DoFs this rank stores (owned, partition ghosts, the DoFs of
+       * the contact rows it holds and the targets of their constraints),
+       * the Dirichlet and hanging-node constraints of those DoFs out of
        * @p base_constraints, and the ghosted vectors. */
       void
       setup_stored_dofs(
@@ -251,6 +253,8 @@ namespace Common
       const MPI_Comm                           mpi_communicator;
 
       dealii::IndexSet locally_owned_dofs;
+      /** The DoFs of the rank's own cells. */
+      dealii::IndexSet locally_active_dofs;
       dealii::IndexSet locally_relevant_dofs;
 
       const dealii::AffineConstraints<double> *base_constraints = nullptr;
