@@ -14,6 +14,7 @@
 
 #include <common/contact/contact_geometry.h>
 #include <common/contact/contact_parameters.h>
+#include <common/contact/normal_enforcement.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/materials/linear_elastic.h>
 #include <common/physics/boundary_conditions.h>
@@ -435,6 +436,107 @@ namespace TwoBlockPatch
     std::unique_ptr<Common::Problems::ContactNewtonProblem<dim>>
       contact_problem;
   };
+
+
+
+  /** Secondary node at (x, 1). */
+  template <int dim>
+  inline unsigned int
+  secondary_node_at(const Patch<dim> &patch, const double x)
+  {
+    const auto &surface = patch.contact_problem->coupling().secondary_surface();
+    for (unsigned int j = 0; j < surface.n_nodes(); ++j)
+      if (std::abs(surface.node(j).position[0] - x) < 1e-10)
+        return j;
+    AssertThrow(false, ExcMessage("No secondary node at this x."));
+    return 0;
+  }
+
+  /**
+   * The run of the tests with fixed secondary nodes: the plane-strain patch
+   * (lower support, symmetry line x = 0, mu = 0.3 if Coulomb) with, in
+   * addition, the components of the secondary nodes at (x, 1) that
+   * @p fixed lists held at zero; every touching node closed at the start.
+   * Logs each fixed node's status (and, with one fixed component, whether
+   * contact holds u_x to the primary's mean motion), the nodes sticking
+   * without a normal row, with @p count_unconstrained the closed nodes
+   * without a constraint, and whether Newton converges at full load.
+   */
+  inline void
+  run_with_fixed_secondary_nodes(
+    const unsigned int                 degree,
+    const Common::Contact::FrictionLaw friction_law,
+    const std::vector<std::pair<double, std::vector<unsigned int>>> &fixed,
+    const bool count_unconstrained)
+  {
+    Patch<2> patch(degree, plane_strain_stack, friction_law, 0.3);
+    AffineConstraints<double> base;
+    patch.make_grid_and_dofs(base);
+    patch.add_lower_support(base);
+    patch.add_symmetry(base);
+    base.close();
+    patch.setup_problem(base);
+
+    // The same constraints and, in addition, the fixed components of the
+    // chosen secondary nodes.
+    AffineConstraints<double> constraints;
+    constraints.reinit(complete_index_set(patch.dof_handler.n_dofs()));
+    std::vector<unsigned int> nodes;
+    for (const auto &[x, components] : fixed)
+      {
+        const unsigned int j = secondary_node_at(patch, x);
+        nodes.push_back(j);
+        const auto &dofs =
+          patch.contact_problem->coupling().secondary_surface().node(j).dofs;
+        for (const unsigned int c : components)
+          constraints.add_line(dofs[c]);
+      }
+    constraints.merge(base, AffineConstraints<double>::left_object_wins, true);
+    constraints.close();
+    patch.setup_problem(constraints);
+
+    const auto &enforcement = patch.contact_problem->enforcement();
+    const auto &coupling    = patch.contact_problem->coupling();
+    AffineConstraints<double> with_contact;
+    with_contact.reinit(complete_index_set(patch.dof_handler.n_dofs()));
+    with_contact.merge(constraints);
+    enforcement.add_constraints(with_contact,
+                                patch.contact_problem->displacement());
+    with_contact.close();
+
+    const auto &lagrange =
+      dynamic_cast<const Common::Contact::DualLagrangeEnforcement<2> &>(
+        enforcement.normal_enforcement());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const unsigned int j    = nodes[i];
+        const auto        &dofs = coupling.secondary_surface().node(j).dofs;
+        deallog << "node x = " << fixed[i].first << ": "
+                << Common::Contact::to_string(enforcement.status(j));
+        if (fixed[i].second.size() == 1)
+          {
+            // u_x: constrained by contact to the primary's mean motion?
+            const auto *entries = with_contact.get_constraint_entries(dofs[0]);
+            double      sum     = 0.;
+            if (entries)
+              for (const auto &entry : *entries)
+                sum += entry.second;
+            deallog << ", u_x held by contact: "
+                    << yes_no(entries != nullptr && !entries->empty() &&
+                              std::abs(sum - 1.) < 1e-12);
+          }
+        deallog << std::endl;
+      }
+    deallog << "sticking without normal row: "
+            << lagrange.diagnostics().n_stick_without_normal;
+    if (count_unconstrained)
+      deallog << ", closed without constraint: "
+              << lagrange.diagnostics().n_unconstrained;
+    deallog << std::endl;
+
+    const auto statistics = patch.solve_and_commit();
+    deallog << "converged: " << yes_no(statistics.converged) << std::endl;
+  }
 } // namespace TwoBlockPatch
 
 #endif
