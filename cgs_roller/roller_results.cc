@@ -217,10 +217,7 @@ namespace CgsRoller
                               "points pt 6 ps 1.5"});
         plots.emplace_back("slip", slip);
 
-        if (!Common::IO::write_plots(out.directory, plots))
-          console.stream() << "  Note: gnuplot not available; plot scripts "
-                              "written without PNG."
-                           << std::endl;
+        this->write_plots(plots);
       }
 
     // summary.json: the headline numbers with their references and the

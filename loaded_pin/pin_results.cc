@@ -194,10 +194,7 @@ namespace LoadedPin
         slip.x_range = "[0:180]";
         slip.series  = two_lines(10);
         plots.emplace_back("slip", slip);
-        if (!Common::IO::write_plots(out.directory, plots))
-          console.stream() << "  Note: gnuplot not available; plot scripts "
-                              "written without PNG."
-                           << std::endl;
+        this->write_plots(plots);
       }
 
     JsonObject case_description =

@@ -318,10 +318,7 @@ namespace Punch3d
             plots.emplace_back("surface_displacement_" + name, plot);
           }
 
-        if (!Common::IO::write_plots(out.directory, plots))
-          console.stream() << "  Note: gnuplot not available; plot scripts "
-                              "written without PNG."
-                           << std::endl;
+        this->write_plots(plots);
       }
 
     // summary.json

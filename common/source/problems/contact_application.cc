@@ -55,6 +55,19 @@ namespace Common
 
 
     template <int dim>
+    void
+    ContactApplication<dim>::write_plots(
+      const std::vector<std::pair<std::string, IO::PlotDescription>> &plots)
+    {
+      if (!IO::write_plots(run_parameters.output.directory, plots))
+        console.stream() << "  Note: gnuplot not available; plot scripts "
+                            "written without PNG."
+                         << std::endl;
+    }
+
+
+
+    template <int dim>
     double
     ContactApplication<dim>::final_load_factor() const
     {

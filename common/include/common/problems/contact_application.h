@@ -14,6 +14,7 @@
 #include <common/contact/contact_geometry.h>
 #include <common/io/console.h>
 #include <common/io/json_writer.h>
+#include <common/io/plotting.h>
 #include <common/physics/solid_operator.h>
 #include <common/problems/contact_newton_problem.h>
 #include <common/problems/contact_run_parameters.h>
@@ -139,6 +140,15 @@ namespace Common
       void
       write_summary(const Solvers::LoadSteppingStatistics &stepping,
                     const SummaryBlocks                   &blocks) const;
+
+      /**
+       * @brief Write @p plots into the output directory
+       * (IO::write_plots()); if gnuplot is missing, say on the console that
+       * only the scripts were written. Call on rank 0.
+       */
+      void
+      write_plots(
+        const std::vector<std::pair<std::string, IO::PlotDescription>> &plots);
 
       /** @brief The load factor at the end of the load program. */
       double
