@@ -93,11 +93,47 @@ namespace Common
 
 
     template <int dim>
+    std::vector<bool>
+    cells_around_owned_nodes(const MortarCoupling<dim> &coupling,
+                             const IndexSet            &owned_dofs,
+                             const DoFHandler<dim>     &dof_handler)
+    {
+      std::vector<bool> marked(dof_handler.get_triangulation().n_active_cells(),
+                               false);
+      std::vector<types::global_dof_index> owned_nodes;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          const auto dof = coupling.secondary_surface().node(j).dofs[0];
+          if (owned_dofs.is_element(dof))
+            owned_nodes.push_back(dof);
+        }
+      std::sort(owned_nodes.begin(), owned_nodes.end());
+      std::vector<types::global_dof_index> cell_dofs(
+        dof_handler.get_fe().n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(cell_dofs);
+          marked[cell->active_cell_index()] =
+            std::any_of(cell_dofs.begin(),
+                        cell_dofs.end(),
+                        [&](const types::global_dof_index dof) {
+                          return std::binary_search(owned_nodes.begin(),
+                                                    owned_nodes.end(),
+                                                    dof);
+                        });
+        }
+      return marked;
+    }
+
+
+
+    template <int dim>
     void
     add_contact_sparsity(const MortarCoupling<dim>       &coupling,
                          const RowPartition              &rows,
                          const DoFHandler<dim>           &dof_handler,
                          const AffineConstraints<double> &constraints,
+                         const std::vector<bool>         &extra_cells,
                          DynamicSparsityPattern          &dsp)
     {
       // Primary DoFs coupled to each DoF of a paired secondary node.
@@ -125,7 +161,8 @@ namespace Common
         dof_handler.get_fe().n_dofs_per_cell());
       std::vector<types::global_dof_index> closure;
       for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
+        if (cell->is_locally_owned() ||
+            (!extra_cells.empty() && extra_cells[cell->active_cell_index()]))
           {
             cell->get_dof_indices(cell_dofs);
             closure.assign(cell_dofs.begin(), cell_dofs.end());
@@ -186,33 +223,38 @@ namespace Common
         }
     }
 
-#define INSTANTIATE(dim)                                                \
-  template std::vector<Tensor<1, dim>> nodal_normals(                   \
-    const MortarCoupling<dim> &);                                       \
-  template std::vector<NodeKinematics<dim>> node_kinematics(            \
-    const MortarCoupling<dim> &);                                       \
-  template std::vector<NodeKinematics<dim>> node_kinematics(            \
-    const MortarCoupling<dim> &,                                        \
-    const RowPartition &,                                               \
-    const Vector<double> &);                                            \
-  template std::vector<NodeKinematics<dim>> node_kinematics(            \
-    const MortarCoupling<dim> &,                                        \
-    const RowPartition &,                                               \
-    const TrilinosWrappers::MPI::Vector &);                             \
-  template void gap_gradient(const MortarCoupling<dim> &,               \
-                             const unsigned int,                        \
-                             const Tensor<1, dim> &,                    \
-                             std::vector<types::global_dof_index> &,    \
-                             Vector<double> &);                         \
-  template void add_contact_sparsity(const MortarCoupling<dim> &,       \
-                                     const RowPartition &,              \
-                                     const DoFHandler<dim> &,           \
-                                     const AffineConstraints<double> &, \
-                                     DynamicSparsityPattern &);         \
-  template void add_traction_forces(const MortarCoupling<dim> &,        \
-                                    const ContactState<dim> &,          \
-                                    const AffineConstraints<double> &,  \
-                                    const IndexSet &,                   \
+#define INSTANTIATE(dim)                                                          \
+  template std::vector<Tensor<1, dim>> nodal_normals(                             \
+    const MortarCoupling<dim> &);                                                 \
+  template std::vector<NodeKinematics<dim>> node_kinematics(                      \
+    const MortarCoupling<dim> &);                                                 \
+  template std::vector<NodeKinematics<dim>> node_kinematics(                      \
+    const MortarCoupling<dim> &,                                                  \
+    const RowPartition &,                                                         \
+    const Vector<double> &);                                                      \
+  template std::vector<NodeKinematics<dim>> node_kinematics(                      \
+    const MortarCoupling<dim> &,                                                  \
+    const RowPartition &,                                                         \
+    const TrilinosWrappers::MPI::Vector &);                                       \
+  template void              gap_gradient(const MortarCoupling<dim> &,            \
+                                          const unsigned int,                     \
+                                          const Tensor<1, dim> &,                 \
+                                          std::vector<types::global_dof_index> &, \
+                                          Vector<double> &);                      \
+  template std::vector<bool> cells_around_owned_nodes(                            \
+    const MortarCoupling<dim> &,                                                  \
+    const IndexSet &,                                                             \
+    const DoFHandler<dim> &);                                                     \
+  template void add_contact_sparsity(const MortarCoupling<dim> &,                 \
+                                     const RowPartition &,                        \
+                                     const DoFHandler<dim> &,                     \
+                                     const AffineConstraints<double> &,           \
+                                     const std::vector<bool> &,                   \
+                                     DynamicSparsityPattern &);                   \
+  template void add_traction_forces(const MortarCoupling<dim> &,                  \
+                                    const ContactState<dim> &,                    \
+                                    const AffineConstraints<double> &,            \
+                                    const IndexSet &,                             \
                                     TrilinosWrappers::MPI::Vector &);
     INSTANTIATE(2)
     INSTANTIATE(3)

@@ -123,6 +123,21 @@ namespace Common
 
 
     template <int dim>
+    std::vector<bool>
+    ContactEnforcement<dim>::friction_cells(
+      const DoFHandler<dim> &dof_handler) const
+    {
+      if (!has_friction() ||
+          Utilities::MPI::n_mpi_processes(dof_handler.get_communicator()) == 1)
+        return {};
+      return cells_around_owned_nodes(coupling,
+                                      dof_handler.locally_owned_dofs(),
+                                      dof_handler);
+    }
+
+
+
+    template <int dim>
     void
     ContactEnforcement<dim>::add_sparsity_entries(
       const DoFHandler<dim>           &dof_handler,
@@ -133,6 +148,7 @@ namespace Common
                            contact_state.rows(),
                            dof_handler,
                            constraints,
+                           friction_cells(dof_handler),
                            dsp);
     }
 

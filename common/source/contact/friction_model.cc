@@ -184,12 +184,16 @@ namespace Common
               if (row.normal[c] == 0.)
                 continue;
               // end() once: a Trilinos row iterator copies its row when
-              // it is made.
+              // it is made. The bulk matrix shares the sparsity pattern of
+              // the contact system: the entries of its row beyond the
+              // node's cells are structural zeros, and their columns may be
+              // DoFs this rank does not store.
               const auto end = bulk_matrix.end(node.dofs[c]);
               for (auto entry = bulk_matrix.begin(node.dofs[c]); entry != end;
                    ++entry)
-                stiffness_row[entry->column()] +=
-                  row.normal[c] * entry->value();
+                if (entry->value() != 0.)
+                  stiffness_row[entry->column()] +=
+                    row.normal[c] * entry->value();
             }
           const double pressure = rn / row.weight;
 

@@ -37,6 +37,31 @@ namespace Common
         result.compress();
         return result;
       }
+
+
+
+      /** The DoFs of the cells marked in @p marked (by active cell index;
+       * may be empty). */
+      template <int dim>
+      IndexSet
+      dofs_of_cells(const DoFHandler<dim>   &dof_handler,
+                    const std::vector<bool> &marked)
+      {
+        IndexSet dofs(dof_handler.n_dofs());
+        if (marked.empty())
+          return dofs;
+        std::vector<types::global_dof_index> cell_dofs(
+          dof_handler.get_fe().n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (marked[cell->active_cell_index()])
+            {
+              cell->get_dof_indices(cell_dofs);
+              std::sort(cell_dofs.begin(), cell_dofs.end());
+              dofs.add_indices(cell_dofs.begin(), cell_dofs.end());
+            }
+        dofs.compress();
+        return dofs;
+      }
     } // namespace
 
 
@@ -82,11 +107,17 @@ namespace Common
                                                            reference_modulus);
       // The rows this rank holds: those of its own secondary nodes and of
       // the nodes its cells need (their DoFs and the targets of their
-      // constraints, such as the parents of a hanging node).
+      // constraints, such as the parents of a hanging node); with friction
+      // also those the friction tangent of its own nodes reaches.
       locally_active_dofs = DoFTools::extract_locally_active_dofs(dof_handler);
+      friction_cell_dofs =
+        dofs_of_cells(dof_handler,
+                      contact_enforcement->friction_cells(dof_handler));
+      IndexSet needed = locally_active_dofs;
+      needed.add_indices(friction_cell_dofs);
       contact_enforcement->distribute_rows(
         locally_owned_dofs,
-        with_constraint_targets(locally_active_dofs, base_constraints),
+        with_constraint_targets(needed, base_constraints),
         mpi_communicator);
       contact_enforcement->mark_constrained_nodes(base_constraints);
       contact_enforcement->initialize_active_set();
@@ -116,9 +147,10 @@ namespace Common
     // partition interface; the shared triangulation makes every other cell
     // a ghost, so deal.II's locally relevant set would be every DoF), the
     // DoFs of the contact rows it holds (its own secondary nodes and those
-    // its cells need) with their primary nodes, and the DoFs that the
-    // constraints of those lines refer to (a rigid body's reference node).
-    // Nothing else is ghosted.
+    // its cells need) with their primary nodes, with friction the DoFs of
+    // the cells around its own secondary nodes, and the DoFs that the
+    // constraints of those lines refer to (a rigid body's reference node,
+    // hanging-node parents). Nothing else is ghosted.
     template <int dim>
     void
     ContactNewtonProblem<dim>::setup_stored_dofs(
@@ -146,6 +178,10 @@ namespace Common
       }
       IndexSet relevant = partition_relevant;
       relevant.add_indices(contact_dofs);
+      // The friction tangent of an owned node is its row of the bulk
+      // stiffness: the DoFs of every cell around the node, closed below
+      // over the hanging-node parents.
+      relevant.add_indices(friction_cell_dofs);
       relevant = with_constraint_targets(relevant, base_constraints);
       relevant.compress();
 

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -239,7 +240,20 @@ namespace Common
 
 
 
-    LinearSolver::~LinearSolver() = default;
+    LinearSolver::~LinearSolver()
+    {
+      // Releasing parallel factors (MUMPS) is a collective call. While an
+      // exception thrown on this rank alone unwinds the stack, the other
+      // ranks are elsewhere and the release would wait for them forever;
+      // the run ends with MPI_Abort in that case, so the factors are left
+      // to it.
+      if (std::uncaught_exceptions() > 0 && direct &&
+          direct->matrix != nullptr && direct->matrix->Comm().NumProc() > 1)
+        {
+          (void)direct->solver.release();
+          (void)direct->problem.release();
+        }
+    }
 
 
 

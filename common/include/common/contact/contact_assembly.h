@@ -71,13 +71,27 @@ namespace Common
                  dealii::Vector<double>                       &B);
 
     /**
+     * @brief The cells, of any rank, that hold a DoF of a secondary node
+     * whose first DoF is in @p owned_dofs, marked by active cell index. The
+     * friction tangent of such a node is its row of the bulk stiffness,
+     * which these cells assemble: the rank needs their DoFs, the rows of
+     * their secondary nodes and the couplings they create.
+     */
+    template <int dim>
+    std::vector<bool>
+    cells_around_owned_nodes(const MortarCoupling<dim>     &coupling,
+                             const dealii::IndexSet        &owned_dofs,
+                             const dealii::DoFHandler<dim> &dof_handler);
+
+    /**
      * @brief Add to @p dsp every coupling that contact can create, for
      * any active set, either enforcement and friction: for each locally
-     * owned cell, its DoFs together with the primary DoFs of every paired
-     * secondary node of the cell, all coupled with each other, and
-     * distributed through @p constraints (hanging nodes, Dirichlet
-     * conditions). Reads the rows this rank holds (@p rows), which cover
-     * the secondary nodes of its cells.
+     * owned cell, and each cell marked in @p extra_cells (by active cell
+     * index; may be empty), its DoFs together with the primary DoFs of
+     * every paired secondary node of the cell, all coupled with each
+     * other, and distributed through @p constraints (hanging nodes,
+     * Dirichlet conditions). Reads the rows this rank holds (@p rows),
+     * which cover the secondary nodes of its cells.
      */
     template <int dim>
     void
@@ -85,6 +99,7 @@ namespace Common
                          const RowPartition                      &rows,
                          const dealii::DoFHandler<dim>           &dof_handler,
                          const dealii::AffineConstraints<double> &constraints,
+                         const std::vector<bool>                 &extra_cells,
                          dealii::DynamicSparsityPattern          &dsp);
 
     /**

@@ -170,6 +170,16 @@ namespace Common
       begin_step();
 
       /**
+       * @brief With friction, the cells that the friction tangent of the
+       * rows this rank owns is assembled over, whoever owns them
+       * (cells_around_owned_nodes()): the rank stores their DoFs and
+       * holds the rows of their secondary nodes. Marked by active cell
+       * index; empty without friction or on one rank.
+       */
+      std::vector<bool>
+      friction_cells(const dealii::DoFHandler<dim> &dof_handler) const;
+
+      /**
        * @brief Add to @p dsp every coupling that contact can create, for
        * any active set and either enforcement: for each locally owned cell,
        * its DoFs together with the primary DoFs of every paired secondary

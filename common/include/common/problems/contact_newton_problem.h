@@ -255,6 +255,9 @@ namespace Common
       dealii::IndexSet locally_owned_dofs;
       /** The DoFs of the rank's own cells. */
       dealii::IndexSet locally_active_dofs;
+      /** With friction, the DoFs of the cells around the rank's own
+       * secondary nodes (ContactEnforcement::friction_cells()). */
+      dealii::IndexSet friction_cell_dofs;
       dealii::IndexSet locally_relevant_dofs;
 
       const dealii::AffineConstraints<double> *base_constraints = nullptr;
