@@ -94,16 +94,16 @@ namespace Common
 
     template <int dim>
     std::vector<bool>
-    cells_around_owned_nodes(const MortarCoupling<dim> &coupling,
+    cells_around_owned_nodes(const ContactSurface<dim> &secondary,
                              const IndexSet            &owned_dofs,
                              const DoFHandler<dim>     &dof_handler)
     {
       std::vector<bool> marked(dof_handler.get_triangulation().n_active_cells(),
                                false);
       std::vector<types::global_dof_index> owned_nodes;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+      for (unsigned int j = 0; j < secondary.n_nodes(); ++j)
         {
-          const auto dof = coupling.secondary_surface().node(j).dofs[0];
+          const auto dof = secondary.node(j).dofs[0];
           if (owned_dofs.is_element(dof))
             owned_nodes.push_back(dof);
         }
@@ -242,7 +242,7 @@ namespace Common
                                           std::vector<types::global_dof_index> &, \
                                           Vector<double> &);                      \
   template std::vector<bool> cells_around_owned_nodes(                            \
-    const MortarCoupling<dim> &,                                                  \
+    const ContactSurface<dim> &,                                                  \
     const IndexSet &,                                                             \
     const DoFHandler<dim> &);                                                     \
   template void add_contact_sparsity(const MortarCoupling<dim> &,                 \

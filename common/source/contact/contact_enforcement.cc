@@ -123,32 +123,18 @@ namespace Common
 
 
     template <int dim>
-    std::vector<bool>
-    ContactEnforcement<dim>::friction_cells(
-      const DoFHandler<dim> &dof_handler) const
-    {
-      if (!has_friction() ||
-          Utilities::MPI::n_mpi_processes(dof_handler.get_communicator()) == 1)
-        return {};
-      return cells_around_owned_nodes(coupling,
-                                      dof_handler.locally_owned_dofs(),
-                                      dof_handler);
-    }
-
-
-
-    template <int dim>
     void
     ContactEnforcement<dim>::add_sparsity_entries(
       const DoFHandler<dim>           &dof_handler,
       const AffineConstraints<double> &constraints,
+      const std::vector<bool>         &extra_cells,
       DynamicSparsityPattern          &dsp) const
     {
       add_contact_sparsity(coupling,
                            contact_state.rows(),
                            dof_handler,
                            constraints,
-                           friction_cells(dof_handler),
+                           extra_cells,
                            dsp);
     }
 

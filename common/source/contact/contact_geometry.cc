@@ -56,18 +56,26 @@ namespace Common
     template <int dim>
     void
     ReferenceMortarGeometry<dim>::reinit(
-      const AffineConstraints<double> &constraints)
+      const AffineConstraints<double> &constraints,
+      const RowSelector               &needed_rows)
     {
       secondary = std::make_unique<ContactSurface<dim>>(dof_handler,
                                                         mapping,
                                                         secondary_id);
       secondary->symmetrize_normals(constraints);
+      const std::vector<bool> rows =
+        needed_rows ?
+          MortarCoupling<dim>::rows_to_integrate(*secondary,
+                                                 constraints,
+                                                 needed_rows(*secondary)) :
+          std::vector<bool>();
       if (rigid)
         mortar.reinit(*secondary,
                       *rigid,
                       reference_node_dofs,
                       search_distance,
-                      axisymmetric);
+                      axisymmetric,
+                      rows);
       else
         {
           primary = std::make_unique<ContactSurface<dim>>(dof_handler,
@@ -78,7 +86,8 @@ namespace Common
                         *primary,
                         *search,
                         search_distance,
-                        axisymmetric);
+                        axisymmetric,
+                        rows);
         }
       mortar.condense_hanging_nodes(constraints);
     }

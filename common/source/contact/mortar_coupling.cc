@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <string>
 
 namespace Common
 {
@@ -150,7 +151,8 @@ namespace Common
                                 const ContactSurface<dim> &primary_surface,
                                 const ContactSearch<dim>  &search,
                                 const double               search_distance,
-                                const bool                 axisymmetric)
+                                const bool                 axisymmetric,
+                                const std::vector<bool>   &integrated_rows)
     {
       AssertThrow(dim == 2 || !axisymmetric,
                   ExcMessage("Axisymmetric mortar coupling needs 2D "
@@ -171,7 +173,8 @@ namespace Common
       rows.assign(n_nodes, MortarRow<dim>());
       dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
       std::vector<std::map<unsigned int, double>> weights(n_nodes);
-      std::vector<bool>                           node_covered(n_nodes, true);
+      const std::vector<bool> paired_faces = select_faces(integrated_rows);
+      std::vector<bool>       node_covered(integrated);
 
       const unsigned int degree = secondary->base_element().degree;
       // Exact for the products of shape functions on straight faces, and
@@ -199,6 +202,8 @@ namespace Common
               rows[face.nodes[a]].mesh_size =
                 std::max(rows[face.nodes[a]].mesh_size, size);
             }
+          if (!paired_faces[s])
+            continue;
 
           // One integration point: secondary face parameter xi, weight JxW,
           // partner on primary face m at parameter eta_m.
@@ -370,7 +375,8 @@ namespace Common
       const RigidSurface<dim>                        &rigid,
       const std::array<types::global_dof_index, dim> &reference_node_dofs,
       const double                                    search_distance,
-      const bool                                      axisymmetric)
+      const bool                                      axisymmetric,
+      const std::vector<bool>                        &integrated_rows)
     {
       AssertThrow(dim == 2 || !axisymmetric,
                   ExcMessage("Axisymmetric mortar coupling needs 2D "
@@ -386,7 +392,8 @@ namespace Common
       dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
       std::vector<double>         mass(n_nodes, 0.);
       std::vector<Tensor<1, dim>> moment(n_nodes);
-      std::vector<bool>           node_covered(n_nodes, true);
+      const std::vector<bool>     paired_faces = select_faces(integrated_rows);
+      std::vector<bool>           node_covered(integrated);
 
       const unsigned int       degree = secondary->base_element().degree;
       const QGauss<dim - 1>    face_quadrature(degree + 3);
@@ -407,6 +414,8 @@ namespace Common
               rows[face.nodes[a]].mesh_size =
                 std::max(rows[face.nodes[a]].mesh_size, size);
             }
+          if (!paired_faces[s])
+            continue;
 
           bool covered = true;
           for (unsigned int q = 0; q < pairing_quadrature.size(); ++q)
@@ -697,26 +706,24 @@ namespace Common
 
 
     template <int dim>
-    unsigned int
-    MortarCoupling<dim>::condense_hanging_nodes(
+    std::vector<std::vector<std::pair<unsigned int, double>>>
+    MortarCoupling<dim>::hanging_parents(
+      const ContactSurface<dim>       &secondary,
       const AffineConstraints<double> &constraints)
     {
-      Assert(secondary != nullptr, ExcMessage("Call reinit() first."));
-      const unsigned int n = rows.size();
+      const unsigned int n = secondary.n_nodes();
 
       // Secondary node and component of each secondary DoF.
       std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
         node_of_dof;
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int c = 0; c < dim; ++c)
-          node_of_dof[secondary->node(j).dofs[c]] = {j, c};
+          node_of_dof[secondary.node(j).dofs[c]] = {j, c};
 
-      // The parents of each hanging node, with their weights.
       std::vector<std::vector<std::pair<unsigned int, double>>> parents(n);
-      std::vector<unsigned int>                                 hanging;
       for (unsigned int j = 0; j < n; ++j)
         {
-          const auto &dofs = secondary->node(j).dofs;
+          const auto &dofs = secondary.node(j).dofs;
           if (!std::all_of(dofs.begin(), dofs.end(), [&](const auto dof) {
                 return constraints.is_constrained(dof);
               }))
@@ -741,9 +748,78 @@ namespace Common
                   std::abs(sum - 1.) < 1e-10)
                 parents[j] = candidate;
             }
-          if (!parents[j].empty())
-            hanging.push_back(j);
         }
+      return parents;
+    }
+
+
+
+    // A parent's condensed row combines its own row, those of the hanging
+    // nodes it takes over and those of their other parents
+    // (condense_hanging_nodes()).
+    template <int dim>
+    std::vector<bool>
+    MortarCoupling<dim>::rows_to_integrate(
+      const ContactSurface<dim>       &secondary,
+      const AffineConstraints<double> &constraints,
+      const std::vector<bool>         &needed)
+    {
+      AssertDimension(needed.size(), secondary.n_nodes());
+      std::vector<bool> rows    = needed;
+      const auto        parents = hanging_parents(secondary, constraints);
+      for (unsigned int h = 0; h < parents.size(); ++h)
+        if (std::any_of(parents[h].begin(),
+                        parents[h].end(),
+                        [&](const auto &p) { return needed[p.first]; }))
+          {
+            rows[h] = true;
+            for (const auto &p : parents[h])
+              rows[p.first] = true;
+          }
+      return rows;
+    }
+
+
+
+    template <int dim>
+    std::vector<bool>
+    MortarCoupling<dim>::select_faces(const std::vector<bool> &integrated_rows)
+    {
+      const unsigned int n_nodes = secondary->n_nodes();
+      AssertThrow(integrated_rows.empty() || integrated_rows.size() == n_nodes,
+                  ExcDimensionMismatch(integrated_rows.size(), n_nodes));
+      integrated = integrated_rows.empty() ? std::vector<bool>(n_nodes, true) :
+                                             integrated_rows;
+      std::vector<bool> faces(secondary->n_faces(), false);
+      for (unsigned int s = 0; s < secondary->n_faces(); ++s)
+        for (const unsigned int j : secondary->face(s).nodes)
+          faces[s] = faces[s] || integrated[j];
+      return faces;
+    }
+
+
+
+    template <int dim>
+    bool
+    MortarCoupling<dim>::is_integrated(const unsigned int j) const
+    {
+      AssertIndexRange(j, integrated.size());
+      return integrated[j];
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    MortarCoupling<dim>::condense_hanging_nodes(
+      const AffineConstraints<double> &constraints)
+    {
+      Assert(secondary != nullptr, ExcMessage("Call reinit() first."));
+      const auto parents = hanging_parents(*secondary, constraints);
+      std::vector<unsigned int> hanging;
+      for (unsigned int j = 0; j < parents.size(); ++j)
+        if (!parents[j].empty())
+          hanging.push_back(j);
       if (hanging.empty())
         return 0;
 
@@ -894,6 +970,9 @@ namespace Common
     MortarCoupling<dim>::weighted_gap(const unsigned int j,
                                       const VectorType  &u) const
     {
+      Assert(integrated[j],
+             ExcMessage("Row " + std::to_string(j) +
+                        " was not integrated on this rank."));
       const MortarRow<dim>   &r    = rows[j];
       const SurfaceNode<dim> &node = secondary->node(j);
       Tensor<1, dim>          d;
@@ -913,6 +992,9 @@ namespace Common
     MortarCoupling<dim>::relative_displacement(const unsigned int j,
                                                const VectorType  &u) const
     {
+      Assert(integrated[j],
+             ExcMessage("Row " + std::to_string(j) +
+                        " was not integrated on this rank."));
       const MortarRow<dim>   &r    = rows[j];
       const SurfaceNode<dim> &node = secondary->node(j);
       Tensor<1, dim>          d;

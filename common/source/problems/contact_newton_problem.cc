@@ -1,3 +1,4 @@
+#include <common/contact/contact_assembly.h>
 #include <common/io/timer.h>
 #include <common/physics/rigid_body.h>
 #include <common/problems/contact_newton_problem.h>
@@ -100,25 +101,43 @@ namespace Common
 
       const auto   start     = std::chrono::steady_clock::now();
       const double cpu_start = IO::process_cpu_seconds();
-      geometry.reinit(base_constraints);
+
+      // The rows this rank holds, integrates and reads: those of its own
+      // secondary nodes and of the nodes its cells need (their DoFs and the
+      // targets of their constraints, such as the parents of a hanging
+      // node); with friction on several ranks also those of the cells
+      // around its own nodes, over which their friction tangent (a row of
+      // the bulk stiffness) is assembled.
+      locally_active_dofs = DoFTools::extract_locally_active_dofs(dof_handler);
+      IndexSet   needed_dofs;
+      const bool distributed =
+        Utilities::MPI::n_mpi_processes(mpi_communicator) > 1;
+      const auto needed_rows = [&](
+                                 const Contact::ContactSurface<dim> &surface) {
+        friction_cells     = distributed && contact_parameters.has_friction() ?
+                               Contact::cells_around_owned_nodes(surface,
+                                                             locally_owned_dofs,
+                                                             dof_handler) :
+                               std::vector<bool>();
+        friction_cell_dofs = dofs_of_cells(dof_handler, friction_cells);
+        IndexSet needed    = locally_active_dofs;
+        needed.add_indices(friction_cell_dofs);
+        needed_dofs = with_constraint_targets(needed, base_constraints);
+        std::vector<bool> rows(surface.n_nodes(), false);
+        for (unsigned int j = 0; j < surface.n_nodes(); ++j)
+          for (const auto dof : surface.node(j).dofs)
+            rows[j] = rows[j] || locally_owned_dofs.is_element(dof) ||
+                      needed_dofs.is_element(dof);
+        return rows;
+      };
+      geometry.reinit(base_constraints, needed_rows);
       contact_enforcement =
         std::make_unique<Contact::ContactEnforcement<dim>>(contact_parameters,
                                                            geometry.coupling(),
                                                            reference_modulus);
-      // The rows this rank holds: those of its own secondary nodes and of
-      // the nodes its cells need (their DoFs and the targets of their
-      // constraints, such as the parents of a hanging node); with friction
-      // also those the friction tangent of its own nodes reaches.
-      locally_active_dofs = DoFTools::extract_locally_active_dofs(dof_handler);
-      friction_cell_dofs =
-        dofs_of_cells(dof_handler,
-                      contact_enforcement->friction_cells(dof_handler));
-      IndexSet needed = locally_active_dofs;
-      needed.add_indices(friction_cell_dofs);
-      contact_enforcement->distribute_rows(
-        locally_owned_dofs,
-        with_constraint_targets(needed, base_constraints),
-        mpi_communicator);
+      contact_enforcement->distribute_rows(locally_owned_dofs,
+                                           needed_dofs,
+                                           mpi_communicator);
       contact_enforcement->mark_constrained_nodes(base_constraints);
       contact_enforcement->initialize_active_set();
       solve_times.contact_setup = IO::seconds_since(start);
@@ -233,6 +252,7 @@ namespace Common
       contact_enforcement->add_sparsity_entries(
         dof_handler,
         constraints_dirichlet_and_hanging_nodes,
+        friction_cells,
         dsp);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  locally_owned_dofs,

@@ -94,10 +94,14 @@ namespace Common
                 const DoFHandler<dim>           &dof_handler,
                 const ContactNewtonProblem<dim> &problem)
     {
+      // Each rank integrates the rows it holds: the owners count.
       const auto  &coupling = problem.coupling();
+      const auto  &rows     = problem.enforcement().rows();
       unsigned int n_paired = 0;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        n_paired += coupling.row(j).has_partner;
+        n_paired += rows.is_owned(j) && coupling.row(j).has_partner;
+      if (rows.is_distributed())
+        n_paired = Utilities::MPI::sum(n_paired, rows.communicator());
       console.stream() << "Mesh: "
                        << dof_handler.get_triangulation().n_active_cells()
                        << " active cells, " << dof_handler.n_dofs()

@@ -71,15 +71,16 @@ namespace Common
                  dealii::Vector<double>                       &B);
 
     /**
-     * @brief The cells, of any rank, that hold a DoF of a secondary node
-     * whose first DoF is in @p owned_dofs, marked by active cell index. The
+     * @brief The cells, of any rank, that hold a DoF of a node of
+     * @p secondary whose first DoF is in @p owned_dofs, marked by active
+     * cell index. The
      * friction tangent of such a node is its row of the bulk stiffness,
      * which these cells assemble: the rank needs their DoFs, the rows of
      * their secondary nodes and the couplings they create.
      */
     template <int dim>
     std::vector<bool>
-    cells_around_owned_nodes(const MortarCoupling<dim>     &coupling,
+    cells_around_owned_nodes(const ContactSurface<dim>     &secondary,
                              const dealii::IndexSet        &owned_dofs,
                              const dealii::DoFHandler<dim> &dof_handler);
 

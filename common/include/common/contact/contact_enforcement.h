@@ -170,25 +170,19 @@ namespace Common
       begin_step();
 
       /**
-       * @brief With friction, the cells that the friction tangent of the
-       * rows this rank owns is assembled over, whoever owns them
-       * (cells_around_owned_nodes()): the rank stores their DoFs and
-       * holds the rows of their secondary nodes. Marked by active cell
-       * index; empty without friction or on one rank.
-       */
-      std::vector<bool>
-      friction_cells(const dealii::DoFHandler<dim> &dof_handler) const;
-
-      /**
        * @brief Add to @p dsp every coupling that contact can create, for
        * any active set and either enforcement: for each locally owned cell,
        * its DoFs together with the primary DoFs of every paired secondary
        * node of the cell, all coupled with each other, and distributed
-       * through @p constraints (hanging nodes, Dirichlet conditions).
+       * through @p constraints (hanging nodes, Dirichlet conditions). The
+       * same for the cells marked in @p extra_cells (by active cell index;
+       * may be empty): with friction under MPI, the cells around the
+       * rank's own secondary nodes (cells_around_owned_nodes()).
        */
       void
       add_sparsity_entries(const dealii::DoFHandler<dim>           &dof_handler,
                            const dealii::AffineConstraints<double> &constraints,
+                           const std::vector<bool>                 &extra_cells,
                            dealii::DynamicSparsityPattern          &dsp) const;
 
       /**

@@ -22,6 +22,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -41,14 +42,25 @@ namespace Common
       virtual ~ContactGeometry() = default;
 
       /**
+       * @brief The rows of the secondary surface a rank needs, by node
+       * (all if empty): under MPI, the rows it holds.
+       */
+      using RowSelector =
+        std::function<std::vector<bool>(const ContactSurface<dim> &)>;
+
+      /**
        * @brief Build the surfaces, the pairing and the mortar rows for the
        * current configuration of the mesh, and adapt the rows to the
        * hanging nodes of the secondary surface.
        * @param[in] constraints Hanging-node and Dirichlet constraints,
        * closed (MortarCoupling::condense_hanging_nodes()).
+       * @param[in] needed_rows Called with the secondary surface once it is
+       * built: only the rows it selects are integrated (with those their
+       * hanging-node condensation reads); every row if not given.
        */
       virtual void
-      reinit(const dealii::AffineConstraints<double> &constraints) = 0;
+      reinit(const dealii::AffineConstraints<double> &constraints,
+             const RowSelector &needed_rows = RowSelector()) = 0;
 
       /**
        * @brief Bring the rows to the displacement @p u (ghosted, mm).
@@ -112,8 +124,11 @@ namespace Common
                               const double           search_distance,
                               const bool             axisymmetric);
 
+      using typename ContactGeometry<dim>::RowSelector;
+
       void
-      reinit(const dealii::AffineConstraints<double> &constraints) override;
+      reinit(const dealii::AffineConstraints<double> &constraints,
+             const RowSelector &needed_rows = RowSelector()) override;
 
       /** @brief Reference configuration: nothing changes; false. */
       bool

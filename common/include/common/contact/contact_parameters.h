@@ -47,6 +47,14 @@ namespace Common
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
+      /** @brief True if Coulomb friction with mu > 0 is enforced. */
+      bool
+      has_friction() const
+      {
+        return friction_law == FrictionLaw::coulomb &&
+               friction_coefficient > 0.;
+      }
+
       dealii::types::boundary_id primary_boundary_id;
       dealii::types::boundary_id secondary_boundary_id;
       Enforcement                enforcement;

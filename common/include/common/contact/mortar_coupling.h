@@ -106,13 +106,19 @@ namespace Common
        * integral, the dual basis included, carries the ring measure
        * \f$2\pi x\f$, so D and M are areas (mm^2) and the pressures of a
        * Lagrange-multiplier enforcement are forces per area.
+       * @param[in] integrated_rows The rows to integrate, by secondary
+       * node (all if empty), closed under the hanging-node condensation
+       * (rows_to_integrate()): only the secondary faces that touch them
+       * are paired. Every row gets its weight D_j; a row not integrated
+       * has no partner.
        */
       void
       reinit(const ContactSurface<dim> &secondary,
              const ContactSurface<dim> &primary,
              const ContactSearch<dim>  &search,
              const double               search_distance,
-             const bool                 axisymmetric = false);
+             const bool                 axisymmetric    = false,
+             const std::vector<bool>   &integrated_rows = {});
 
       /**
        * @brief Integrate D and the mortar rows against an analytic rigid
@@ -134,9 +140,26 @@ namespace Common
       reinit(const ContactSurface<dim> &secondary,
              const RigidSurface<dim>   &primary,
              const std::array<dealii::types::global_dof_index, dim>
-                         &reference_node_dofs,
-             const double search_distance,
-             const bool   axisymmetric = false);
+                                     &reference_node_dofs,
+             const double             search_distance,
+             const bool               axisymmetric    = false,
+             const std::vector<bool> &integrated_rows = {});
+
+      /**
+       * @brief The rows to integrate so that the rows marked in @p needed
+       * (by node of @p secondary) are exact after
+       * condense_hanging_nodes(): those rows, the hanging nodes among
+       * their neighbours that a needed parent takes over, and the other
+       * parents of those hanging nodes.
+       */
+      static std::vector<bool>
+      rows_to_integrate(const ContactSurface<dim>               &secondary,
+                        const dealii::AffineConstraints<double> &constraints,
+                        const std::vector<bool>                 &needed);
+
+      /** @brief True if row @p j was integrated by the last reinit(). */
+      bool
+      is_integrated(const unsigned int j) const;
 
       /**
        * @brief Adapt the rows to the hanging nodes of the secondary
@@ -237,6 +260,17 @@ namespace Common
                             const double              search_distance,
                             const AddPoint           &add_point) const;
 
+      /** The parents of each hanging node of @p secondary (secondary
+       * nodes, with their interpolation weights; empty for other nodes). */
+      static std::vector<std::vector<std::pair<unsigned int, double>>>
+      hanging_parents(const ContactSurface<dim>               &secondary,
+                      const dealii::AffineConstraints<double> &constraints);
+
+      /** Which faces of the secondary surface touch an integrated row
+       * (all if @p integrated_rows is empty); stores the rows. */
+      std::vector<bool>
+      select_faces(const std::vector<bool> &integrated_rows);
+
       /** Dual basis coefficients of secondary face @p s (stored) and
        * the integrals \f$\int N_a\f$ of its shape functions (@p De) and of
        * 1 (returned) with @p quadrature and the ring measure if
@@ -252,6 +286,8 @@ namespace Common
       std::vector<PrimaryNode<dim>>           primary_nodes;
       std::vector<MortarRow<dim>>             rows;
       std::vector<dealii::FullMatrix<double>> dual_coefficients;
+      /** The rows integrated by the last reinit(), by secondary node. */
+      std::vector<bool> integrated;
     };
   } // namespace Contact
 } // namespace Common

@@ -255,10 +255,12 @@ namespace Common
       dealii::IndexSet locally_owned_dofs;
       /** The DoFs of the rank's own cells. */
       dealii::IndexSet locally_active_dofs;
-      /** With friction, the DoFs of the cells around the rank's own
-       * secondary nodes (ContactEnforcement::friction_cells()). */
-      dealii::IndexSet friction_cell_dofs;
-      dealii::IndexSet locally_relevant_dofs;
+      /** With friction on several ranks, the cells around the rank's own
+       * secondary nodes (Contact::cells_around_owned_nodes()), by active
+       * cell index, and their DoFs; empty otherwise. */
+      std::vector<bool> friction_cells;
+      dealii::IndexSet  friction_cell_dofs;
+      dealii::IndexSet  locally_relevant_dofs;
 
       const dealii::AffineConstraints<double> *base_constraints = nullptr;
       std::unique_ptr<Contact::ContactEnforcement<dim>> contact_enforcement;
