@@ -36,8 +36,9 @@ run_case() { # app, production .prm, [case name, override lines]
   if $quick || [ -n "$overrides" ]; then
     local level=6
     [ "$app" = punch3d ] && level=3
-    # The 3D model's production mesh is already coarser than that.
+    # The 3D models' production meshes are already coarser than that.
     [[ "$name" == *3d* ]] && level=1
+    [ "$app" = loaded_pin ] && level=1
     mkdir -p "$results/cases"
     { echo "include $root/$prm"
       if $quick; then
@@ -57,7 +58,7 @@ run_case() { # app, production .prm, [case name, override lines]
     echo "== [$((SECONDS - start)) s] $app: $name FAILED (no result)"
 }
 
-for app in cgs_roller punch3d; do
+for app in cgs_roller punch3d loaded_pin; do
   for prm in parameters/$app/*.prm; do
     run_case "$app" "$prm"
   done
@@ -110,6 +111,13 @@ echo "== mesh study (benchmark 2, axisymmetric)"
 if $quick; then mesh_flags=(--quick); else mesh_flags=(); fi
 python3 scripts/punch_mesh_study.py "${mesh_flags[@]}" \
   --build "$root/build-release" --out "$results/studies/punch3d_mesh"
+echo "== mesh study wall time: $((SECONDS - study_start)) s"
+
+study_start=$SECONDS
+echo "== mesh study (benchmark 4, loaded pin)"
+if $quick; then pin_flags=(--levels 1 2); else pin_flags=(--levels 1 2 3); fi
+python3 scripts/pin_mesh_study.py "${pin_flags[@]}" \
+  --build "$root/build-release" --out "$results/studies/loaded_pin_mesh"
 echo "== mesh study wall time: $((SECONDS - study_start)) s"
 
 # Every judged check of the report compares a result with a reference that
