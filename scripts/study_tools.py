@@ -9,6 +9,7 @@ import csv
 import json
 import os
 import shutil
+import signal
 import subprocess
 import time
 
@@ -39,12 +40,18 @@ def run_variant(app, production, case_dir, overrides):
     return summary, wall
 
 
-def run_variant_measured(app, production, case_dir, overrides, launcher=()):
+class TimeLimitExceeded(Exception):
+    """A run stopped at its time limit (run_variant_measured())."""
+
+
+def run_variant_measured(app, production, case_dir, overrides, launcher=(),
+                         time_limit=None):
     """As run_variant(), and also the run's peak resident memory (MB).
 
     launcher: a command prefix, e.g. ("mpirun", "-np", "2"); the peak memory
-    is then that of the largest process. Returns (summary.json as a dict,
-    wall time in seconds, peak memory in MB).
+    is then that of the largest process. time_limit: seconds after which the
+    run (its whole process group) is killed and TimeLimitExceeded raised.
+    Returns (summary.json as a dict, wall time in seconds, peak memory in MB).
     """
     os.makedirs(case_dir, exist_ok=True)
     sections = dict(overrides)
@@ -62,8 +69,17 @@ def run_variant_measured(app, production, case_dir, overrides, launcher=()):
     with open(prm, "w") as f:
         f.write(text)
     start = time.time()
-    process = subprocess.Popen([*launcher, app, prm], stdout=subprocess.DEVNULL)
-    _, status, usage = os.wait4(process.pid, 0)
+    process = subprocess.Popen([*launcher, app, prm], stdout=subprocess.DEVNULL,
+                               start_new_session=True)
+    while True:
+        pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+        if pid != 0:
+            break
+        if time_limit is not None and time.time() - start > time_limit:
+            os.killpg(process.pid, signal.SIGKILL)
+            os.wait4(process.pid, 0)
+            raise TimeLimitExceeded(f"{app} {prm}: stopped after {time_limit} s")
+        time.sleep(0.2)
     wall = time.time() - start
     process.returncode = os.waitstatus_to_exitcode(status)
     if process.returncode != 0:
@@ -81,9 +97,13 @@ def contact_overrides(enforcement):
 
 
 def write_table(path, rows):
-    """Write rows (dicts with the same keys) as CSV."""
+    """Write rows (dicts) as CSV: the columns are every key, in the order of
+    first appearance; a row without a key leaves its cell empty."""
+    fieldnames = []
+    for row in rows:
+        fieldnames += [key for key in row if key not in fieldnames]
     with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer = csv.DictWriter(f, fieldnames=fieldnames, restval="")
         writer.writeheader()
         writer.writerows(rows)
 
