@@ -50,7 +50,7 @@ namespace
 
     unsigned int    k = 0;
     NewtonCallbacks callbacks;
-    callbacks.assemble_solve_and_update = [&]() {
+    callbacks.assemble_solve_and_update = [&](const double) {
       return script[std::min<std::size_t>(k, script.size() - 1)].step;
     };
     callbacks.evaluate_residual = [&]() {

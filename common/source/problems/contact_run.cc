@@ -268,6 +268,12 @@ namespace Common
         .set("linear_solve_s", times.linear_solve)
         .set("residual_s", times.residual)
         .set("active_set_update_s", times.active_set_update);
+      const auto &linear = problem.linear_solver_statistics();
+      timings.set("factorisation_s", linear.factorisation_time)
+        .set("n_factorisations", linear.n_factorisations)
+        .set("n_reuse_solves", linear.n_reuse_solves)
+        .set("n_reuse_gmres_iterations", linear.n_reuse_iterations)
+        .set("n_failed_reuse", linear.n_failed_reuse);
       return stepping;
     }
 

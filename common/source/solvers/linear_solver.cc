@@ -268,13 +268,16 @@ namespace Common
     unsigned int
     LinearSolver::solve(const TrilinosWrappers::SparseMatrix &A,
                         TrilinosWrappers::MPI::Vector        &x,
-                        const TrilinosWrappers::MPI::Vector  &b)
+                        const TrilinosWrappers::MPI::Vector  &b,
+                        const double relative_tolerance)
     {
+      const double tolerance =
+        std::max(parameters.tolerance, relative_tolerance);
       if (parameters.type == LinearSolverType::umfpack)
         return solve_umfpack(A, x, b);
       if (parameters.type == LinearSolverType::cg_amg ||
           parameters.type == LinearSolverType::gmres_amg)
-        return solve_amg(A, x, b);
+        return solve_amg(A, x, b, tolerance);
 
       // Amesos keeps the symbolic factorisation of the matrix object; a
       // new object (or reset()) starts over.
@@ -310,7 +313,7 @@ namespace Common
                                     std::max(direct->solve_time, 1e-9),
                                   3.,
                                   200.)));
-          StallControl control(limit, parameters.tolerance * b.l2_norm());
+          StallControl control(limit, tolerance * b.l2_norm());
           control.log_history(false);
           control.log_result(false);
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
@@ -328,11 +331,15 @@ namespace Common
             {
               gmres.solve(A, x_trial, b, preconditioner);
               x = x_trial;
+              ++stats.n_reuse_solves;
+              stats.n_reuse_iterations += control.last_step();
               return control.last_step();
             }
           catch (const SolverControl::NoConvergence &)
             {
               // Refactorise below.
+              ++stats.n_failed_reuse;
+              stats.n_reuse_iterations += control.last_step();
             }
         }
 
@@ -342,10 +349,20 @@ namespace Common
                              "system is singular."));
       direct->factorised         = true;
       direct->factorisation_time = seconds_since(start);
-      start                      = std::chrono::steady_clock::now();
+      ++stats.n_factorisations;
+      stats.factorisation_time += direct->factorisation_time;
+      start = std::chrono::steady_clock::now();
       direct->apply(x, b);
       direct->solve_time = seconds_since(start);
       return 1;
+    }
+
+
+
+    const LinearSolver::Statistics &
+    LinearSolver::statistics() const
+    {
+      return stats;
     }
 
 
@@ -376,7 +393,8 @@ namespace Common
     unsigned int
     LinearSolver::solve_amg(const TrilinosWrappers::SparseMatrix &A,
                             TrilinosWrappers::MPI::Vector        &x,
-                            const TrilinosWrappers::MPI::Vector  &b) const
+                            const TrilinosWrappers::MPI::Vector  &b,
+                            const double tolerance) const
     {
       const auto n_rows =
         static_cast<std::size_t>(A.trilinos_matrix().NumMyRows());
@@ -417,8 +435,7 @@ namespace Common
       TrilinosWrappers::PreconditionAMG amg;
       amg.initialize(A, list);
 
-      SolverControl control(parameters.max_iterations,
-                            parameters.tolerance * b.l2_norm());
+      SolverControl control(parameters.max_iterations, tolerance * b.l2_norm());
       control.log_history(false);
       control.log_result(false);
       try
@@ -442,8 +459,8 @@ namespace Common
           std::ostringstream message;
           message << std::scientific << std::setprecision(2)
                   << "The iterative linear solver did not reach the relative "
-                  << "residual " << parameters.tolerance << " in "
-                  << e.last_step << " iterations (reached "
+                  << "residual " << tolerance << " in " << e.last_step
+                  << " iterations (reached "
                   << e.last_residual / std::max(b.l2_norm(), 1e-300)
                   << "); raise 'Maximum iterations' or choose a direct "
                   << "solver.";

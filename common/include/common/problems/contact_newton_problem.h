@@ -206,6 +206,11 @@ namespace Common
       const ContactSolveTimes &
       times() const;
 
+      /** @brief The linear solver's factorisations and reused-factor
+       * solves so far. */
+      const Solvers::LinearSolver::Statistics &
+      linear_solver_statistics() const;
+
     private:
       /** The DoFs this rank stores (owned, partition ghosts, the DoFs of
        * the contact rows it holds and the targets of their constraints),
@@ -220,10 +225,13 @@ namespace Common
       void
       setup_matrices();
 
-      /** One Newton iteration; returns the relative norm of the update. */
+      /** One Newton iteration, its linear system solved to the relative
+       * residual @p linear_tolerance (0: the linear solver's own); returns
+       * the relative norm of the update. */
       double
       assemble_and_solve(const Solvers::LoadState &state,
-                         const ExternalLoad       &load);
+                         const ExternalLoad       &load,
+                         const double              linear_tolerance);
 
       Solvers::NewtonResidual
       evaluate_residual(const Solvers::LoadState &state,

@@ -132,8 +132,10 @@ namespace Common
      * "solution" (displacement, the solid's output fields, and the contact
      * pressure, status, tangential traction and slip). Adds to @p timings
      * the keys contact_setup_s, contact_solve_s, contact_cpu_s,
-     * load_stepping_s, assembly_s, linear_solve_s, residual_s and
-     * active_set_update_s (seconds).
+     * load_stepping_s, assembly_s, linear_solve_s, residual_s,
+     * active_set_update_s and factorisation_s (seconds), and the linear
+     * solver's counts n_factorisations, n_reuse_solves,
+     * n_reuse_gmres_iterations and n_failed_reuse.
      */
     template <int dim>
     Solvers::LoadSteppingStatistics

@@ -71,8 +71,29 @@ namespace Common
     class LinearSolver
     {
     public:
+      /** What the solves so far cost, for the run's profile. */
+      struct Statistics
+      {
+        /** Numeric factorisations of the direct solvers. */
+        unsigned int n_factorisations = 0;
+        /** Solves by GMRES with reused factors that converged. */
+        unsigned int n_reuse_solves = 0;
+        /** GMRES iterations of those solves (one solve with the factors
+         * each). */
+        unsigned int n_reuse_iterations = 0;
+        /** GMRES attempts with reused factors given up for a new
+         * factorisation. */
+        unsigned int n_failed_reuse = 0;
+        /** Wall time of the numeric factorisations (s). */
+        double factorisation_time = 0.;
+      };
+
       explicit LinearSolver(const LinearSolverParameters &parameters);
       ~LinearSolver();
+
+      /** @brief The cost of the solves since construction. */
+      const Statistics &
+      statistics() const;
 
       /** @brief Forget the symbolic factorisation (new pattern). */
       void
@@ -100,6 +121,10 @@ namespace Common
       /**
        * @brief Solve \f$A x = b\f$. Throws with a one-line message if
        * the solver fails.
+       * @param relative_tolerance Relative residual at which an iterative
+       * solve (GMRES with reused factors, the multigrid solvers) may stop,
+       * if larger than the parameter "Tolerance" (inexact Newton); a direct
+       * solve is exact regardless.
        * @return Number of iterations (1 for a direct solve, the GMRES
        * iterations for a solve with reused factors, the Krylov iterations
        * of the multigrid solvers).
@@ -107,12 +132,14 @@ namespace Common
       unsigned int
       solve(const dealii::TrilinosWrappers::SparseMatrix &A,
             dealii::TrilinosWrappers::MPI::Vector        &x,
-            const dealii::TrilinosWrappers::MPI::Vector  &b);
+            const dealii::TrilinosWrappers::MPI::Vector  &b,
+            const double relative_tolerance = 0.);
 
     private:
       struct DirectSolverData;
       const LinearSolverParameters      parameters;
       std::unique_ptr<DirectSolverData> direct;
+      Statistics                        stats;
       /** Near null space, mode after mode (ML's column-major layout). */
       std::vector<double> null_space;
       unsigned int        n_null_space_modes = 0;
@@ -122,7 +149,8 @@ namespace Common
       unsigned int
       solve_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
                 dealii::TrilinosWrappers::MPI::Vector        &x,
-                const dealii::TrilinosWrappers::MPI::Vector  &b) const;
+                const dealii::TrilinosWrappers::MPI::Vector  &b,
+                const double relative_tolerance) const;
     };
 
     /**

@@ -42,6 +42,10 @@ namespace Common
       double step_tolerance = 1e-8;
       /** Largest relative equilibrium residual the step test accepts. */
       double step_test_residual_bound = 1e-6;
+      /** Inexact Newton: relative residual an iterative linear solve must
+       * reach, as a multiple of the previous iteration's Newton residual;
+       * 0 solves every system to the linear solver's own tolerance. */
+      double linear_tolerance_factor = 0.;
     };
 
     /**
@@ -61,9 +65,11 @@ namespace Common
     struct NewtonCallbacks
     {
       /** Assemble the linearised system with the current active set, solve
-       * it and apply the increment; returns the norm of the increment
-       * relative to the norm of the updated solution. */
-      std::function<double()> assemble_solve_and_update;
+       * it to the given relative residual (0: the linear solver's own
+       * tolerance; only iterative solves use it) and apply the increment;
+       * returns the norm of the increment relative to the norm of the
+       * updated solution. */
+      std::function<double(double)> assemble_solve_and_update;
       /** Residuals of the updated state (also updates the pressures). */
       std::function<NewtonResidual()> evaluate_residual;
       /** Apply the active-set rule; returns the number of changed points. */
