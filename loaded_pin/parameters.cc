@@ -89,6 +89,22 @@ namespace LoadedPin
                         "pin, before refinement; twice the sheet layers "
                         "(with the benchmark's dimensions) puts pin "
                         "vertices on the plane of the sheet's face.");
+      prm.declare_entry("Number of arc end refinements",
+                        "0",
+                        Patterns::Integer(0, 8),
+                        "Further graded refinements toward the line of the "
+                        "contact surface at 'Arc end angle' (over the "
+                        "sheet thickness), where the contact arc ends: "
+                        "each halves the cell size there, on the hole and "
+                        "on the pin.");
+      prm.declare_entry("Arc end angle",
+                        "90",
+                        Patterns::Double(0., 180.),
+                        "Angle theta of the line that 'Number of arc end "
+                        "refinements' grade toward, theta = 180 - atan2(y, "
+                        "x) about the hole centre (0 faces the clamp, 180 "
+                        "the load): where the contact arc ends (a coarse "
+                        "run gives it). Units: degrees, 0 to 180.");
     }
     prm.leave_subsection();
   }
@@ -101,8 +117,10 @@ namespace LoadedPin
     prm.enter_subsection("Mesh");
     {
       Common::Geometry::MeshParameters::parse_parameters(prm);
-      n_sheet_layers = prm.get_integer("Number of sheet layers");
-      n_pin_layers   = prm.get_integer("Number of pin layers");
+      n_sheet_layers        = prm.get_integer("Number of sheet layers");
+      n_pin_layers          = prm.get_integer("Number of pin layers");
+      n_arc_end_refinements = prm.get_integer("Number of arc end refinements");
+      arc_end_angle         = prm.get_double("Arc end angle");
     }
     prm.leave_subsection();
   }
@@ -118,6 +136,8 @@ namespace LoadedPin
     options.grading_factor        = grading_factor;
     options.n_sheet_layers        = n_sheet_layers;
     options.n_pin_layers          = n_pin_layers;
+    options.n_arc_end_refinements = n_arc_end_refinements;
+    options.arc_end_angle         = arc_end_angle;
     return options;
   }
 

@@ -46,6 +46,10 @@ namespace LoadedPin
     unsigned int n_sheet_layers;
     /** Coarse cell layers through the pin's half-length. */
     unsigned int n_pin_layers;
+    /** Graded refinements toward the arc end line. */
+    unsigned int n_arc_end_refinements;
+    /** Angle theta of that line (degrees). */
+    double arc_end_angle;
   };
 
   /** Subsection "Loading". */

@@ -219,6 +219,21 @@ namespace LoadedPin
 
 
 
+  double
+  arc_end_distance(const PinGeometry &geometry,
+                   const double       theta,
+                   const Point<3>    &p)
+  {
+    // theta = 180 degrees - atan2(y, x): 0 faces the clamp, 180 the load.
+    const double angle = theta * numbers::PI / 180.;
+    const double x     = -geometry.hole_radius * std::cos(angle);
+    const double y     = geometry.hole_radius * std::sin(angle);
+    return std::hypot(std::hypot(p[0] - x, p[1] - y),
+                      std::max(0., p[2] - 0.5 * geometry.sheet_thickness));
+  }
+
+
+
   void
   make_quarter_mesh(const PinGeometry &geometry,
                     const MeshOptions &options,
@@ -260,6 +275,13 @@ namespace LoadedPin
       tria,
       [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
       options.n_contact_refinements,
+      options.grading_factor);
+    Common::Geometry::refine_toward<3>(
+      tria,
+      [&geometry, &options](const Point<3> &p) {
+        return arc_end_distance(geometry, options.arc_end_angle, p);
+      },
+      options.n_arc_end_refinements,
       options.grading_factor);
   }
 } // namespace LoadedPin

@@ -112,6 +112,13 @@ namespace LoadedPin
     /** Coarse cell layers through the pin's half-length 0 <= z <= 10;
      * twice n_sheet_layers puts a plane of pin vertices at z = 5. */
     unsigned int n_pin_layers = 2;
+    /** Further graded refinement passes toward the line of the contact
+     * surface at theta = arc_end_angle, where the contact arc ends; each
+     * halves the cell size there. */
+    unsigned int n_arc_end_refinements = 0;
+    /** Angle theta = 180 - atan2(y, x) of that line about the hole
+     * centre (degrees, 0 to 180: 0 faces the clamp, 180 the load). */
+    double arc_end_angle = 90.;
   };
 
   /**
@@ -121,6 +128,16 @@ namespace LoadedPin
    */
   double
   contact_distance(const PinGeometry &geometry, const dealii::Point<3> &p);
+
+  /**
+   * @brief Distance (mm) of @p p from the line of the contact surface at
+   * the angle @p theta = 180 - atan2(y, x) (degrees) over
+   * 0 <= z <= sheet_thickness / 2: the target of the arc end refinement.
+   */
+  double
+  arc_end_distance(const PinGeometry      &geometry,
+                   const double            theta,
+                   const dealii::Point<3> &p);
 
   /**
    * @brief Build the quarter model of the sheet and the pin of

@@ -207,7 +207,9 @@ namespace LoadedPin
       .set("global_refinements", parameters.mesh.n_global_refinements)
       .set("contact_refinements", parameters.mesh.n_contact_refinements)
       .set("sheet_layers", parameters.mesh.n_sheet_layers)
-      .set("pin_layers", parameters.mesh.n_pin_layers);
+      .set("pin_layers", parameters.mesh.n_pin_layers)
+      .set("arc_end_refinements", parameters.mesh.n_arc_end_refinements)
+      .set("arc_end_refinement_angle_deg", parameters.mesh.arc_end_angle);
     const JsonObject mesh =
       Common::Problems::mesh_summary<dim>(dof_handler,
                                           [g](const Point<dim> &p) {

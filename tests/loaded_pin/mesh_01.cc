@@ -1,6 +1,10 @@
 /*
  * The quarter mesh of benchmark 4, 3D loaded pin (loaded_pin/pin_mesh.h),
- * coarse and after one global and one graded refinement: the volume of
+ * coarse, after one global and one graded refinement, and graded toward
+ * the arc end (two more halvings along the line theta = 89 degrees of the
+ * contact surface, whose cells must be less than 0.4 times those at
+ * theta = 150 degrees: two halvings give 0.33 with these cell shapes, one
+ * would give about 0.66): the volume of
  * each body and the area of each boundary id of each body, integrated with
  * QGauss(3) and a MappingQ(2), against the exact values (mm^3, mm^2); the
  * largest distance of a vertex on the hole and on the pin's surface from
@@ -227,6 +231,29 @@ main(int argc, char **argv)
   refined.n_global_refinements  = 1;
   refined.n_contact_refinements = 1;
   passed                        = check(refined) && passed;
+
+  // Graded toward the arc end: two more halvings at theta = 89 degrees
+  // than elsewhere on the contact surface (at theta = 150 degrees).
+  MeshOptions arc_end;
+  arc_end.n_contact_refinements = 1;
+  arc_end.n_arc_end_refinements = 2;
+  arc_end.arc_end_angle         = 89.;
+  passed                        = check(arc_end) && passed;
+  {
+    Triangulation<3> tria;
+    make_quarter_mesh(PinGeometry(), arc_end, tria);
+    const auto smallest_at = [&tria](const double theta) {
+      return Common::Geometry::smallest_cell_near<3>(
+        tria,
+        [theta](const Point<3> &p) {
+          return arc_end_distance(PinGeometry(), theta, p);
+        });
+    };
+    const double ratio = smallest_at(89.) / smallest_at(150.);
+    deallog << "  smallest cell at theta = 89 over theta = 150: " << std::fixed
+            << std::setprecision(2) << ratio << std::endl;
+    passed = passed && ratio < 0.4;
+  }
 
   // The applications use a shared triangulation: same cells, same
   // vertices.
