@@ -16,8 +16,19 @@ levels is the error estimate of the converged figures. Writes pin_mesh_study.csv
 and plots of each quantity's difference from the reference against wall
 time (log-log), and of the arc end angle and peak pressure against DoFs.
 
+With --arc-end-refinements, a second series of Q2 runs (column 'series'
+= 'arc end') adds that many 'Number of arc end refinements' toward theta =
+--arc-end-angle on level --arc-end-base-level: the node spacing at the arc
+end halves with each, and the change between its two finest runs is the
+error estimate of the arc end. Those meshes have hanging nodes on the
+contact surface where the refinement levels meet, so their peak pressure
+is not judged; the series is left out of the differences and plots of the
+uniform levels.
+
 Usage: scripts/pin_mesh_study.py [--build DIR] [--out DIR]
            [--levels 1 2 3] [--degrees 1 2] [--mus 0 01]
+           [--arc-end-refinements 2 3] [--arc-end-base-level 1]
+           [--arc-end-angle 89]
 """
 import argparse
 import os
@@ -35,16 +46,21 @@ QUANTITIES = [
 ]
 
 
-def run_case(app, mu, degree, level, out_dir):
-    """One run of the production file of mu at a degree and a level."""
+def run_case(app, mu, degree, level, out_dir, arc_end=0, angle=89.):
+    """One run of the production file of mu at a degree and a level, with
+    arc_end refinements toward theta = angle (degrees)."""
     production = os.path.join(ROOT, f"parameters/loaded_pin/loaded_pin_mu{mu}.prm")
-    case_dir = os.path.join(out_dir, "runs", f"mu{mu}_q{degree}_level{level}")
-    s, wall, memory = run_variant_measured(app, production, case_dir, {
-        "Mesh": {"Element degree": degree,
-                 "Number of contact refinements": level}})
+    name = f"mu{mu}_q{degree}_level{level}" + (f"_arc{arc_end}" if arc_end else "")
+    case_dir = os.path.join(out_dir, "runs", name)
+    mesh = {"Element degree": degree, "Number of contact refinements": level}
+    if arc_end:
+        mesh.update({"Number of arc end refinements": arc_end, "Arc end angle": angle})
+    s, wall, memory = run_variant_measured(app, production, case_dir, {"Mesh": mesh})
     mid, face = s["results"]["mid_plane"], s["results"]["sheet_face"]
     return {
+        "series": "arc end" if arc_end else "uniform",
         "mu": "0.1" if mu == "01" else "0", "degree": degree, "level": level,
+        "arc_end_refinements": arc_end,
         "n_dofs": s["mesh"]["n_dofs"],
         "h_contact_mm": s["mesh"]["smallest_cell_in_contact_zone_mm"],
         "newton_iterations": s["newton"]["total_iterations"],
@@ -72,6 +88,9 @@ def main():
     parser.add_argument("--levels", type=int, nargs="+", default=[1, 2, 3])
     parser.add_argument("--degrees", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--mus", nargs="+", default=["0", "01"])
+    parser.add_argument("--arc-end-refinements", type=int, nargs="*", default=[])
+    parser.add_argument("--arc-end-base-level", type=int, default=1)
+    parser.add_argument("--arc-end-angle", type=float, default=89.)
     args = parser.parse_args()
     app = os.path.join(args.build, "loaded_pin", "loaded_pin")
     os.makedirs(args.out, exist_ok=True)
@@ -83,6 +102,13 @@ def main():
                 row = run_case(app, mu, degree, level, args.out)
                 rows.append(row)
                 print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
+    arc_rows = []
+    for mu in args.mus:
+        for n in args.arc_end_refinements:
+            row = run_case(app, mu, max(args.degrees), args.arc_end_base_level,
+                           args.out, n, args.arc_end_angle)
+            arc_rows.append(row)
+            print(", ".join(f"{k} {v}" for k, v in row.items()), flush=True)
 
     # Differences from the finest Q2 run of each mu (or the finest run).
     for mu in sorted({r["mu"] for r in rows}):
@@ -103,7 +129,20 @@ def main():
                   f"pressure (parabola) {coarse['fitted_peak_pressure_mid_MPa']:.2f} -> "
                   f"{fine['fitted_peak_pressure_mid_MPa']:.2f} MPa (change "
                   f"{100 * (fine['fitted_peak_pressure_mid_MPa'] / coarse['fitted_peak_pressure_mid_MPa'] - 1):+.2f} %)")
-    write_table(os.path.join(args.out, "pin_mesh_study.csv"), rows)
+    for mu in sorted({r["mu"] for r in arc_rows}):
+        finest = sorted((r for r in arc_rows if r["mu"] == mu),
+                        key=lambda r: r["arc_end_refinements"])[-2:]
+        if len(finest) == 2:
+            coarse, fine = finest
+            print(f"mu = {mu}, Q{fine['degree']} level {fine['level']} graded toward the "
+                  f"arc end, {coarse['arc_end_refinements']} -> "
+                  f"{fine['arc_end_refinements']} arc end refinements: arc end "
+                  f"(mid-plane) {coarse['arc_end_mid_deg']:.3f} -> "
+                  f"{fine['arc_end_mid_deg']:.3f} deg (change "
+                  f"{fine['arc_end_mid_deg'] - coarse['arc_end_mid_deg']:+.3f}), (sheet "
+                  f"face) {coarse['arc_end_face_deg']:.3f} -> {fine['arc_end_face_deg']:.3f} "
+                  f"deg (change {fine['arc_end_face_deg'] - coarse['arc_end_face_deg']:+.3f})")
+    write_table(os.path.join(args.out, "pin_mesh_study.csv"), rows + arc_rows)
 
     # Plots: one CSV per series, then difference against wall time.
     series_files = {}
@@ -116,6 +155,9 @@ def main():
             write_table(os.path.join(args.out, name), group)
             series_files[(mu, degree)] = (name, list(group[0].keys()))
     for key, label, unit, absolute in QUANTITIES:
+        # A single level has no difference to plot.
+        if not any(r[f"{key}_difference"] > 0 for r in rows):
+            continue
         clauses = []
         for (mu, degree), (name, columns) in series_files.items():
             x = columns.index("wall_time_s") + 1

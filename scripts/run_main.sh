@@ -121,7 +121,12 @@ echo "== mesh study wall time: $((SECONDS - study_start)) s"
 
 study_start=$SECONDS
 echo "== mesh study (benchmark 4, loaded pin)"
-if $quick; then pin_flags=(--levels 1 2); else pin_flags=(--levels 1 2 3); fi
+# The uniform levels, and level 1 graded toward the arc end.
+if $quick; then
+  pin_flags=(--levels 1 2 --arc-end-refinements 1 2)
+else
+  pin_flags=(--levels 1 2 3 --arc-end-refinements 2 3)
+fi
 python3 scripts/pin_mesh_study.py "${pin_flags[@]}" \
   --build "$root/build-release" --out "$results/studies/loaded_pin_mesh"
 echo "== mesh study wall time: $((SECONDS - study_start)) s"
