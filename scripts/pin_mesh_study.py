@@ -81,6 +81,21 @@ def run_case(app, mu, degree, level, out_dir, arc_end=0, angle=89.):
     }
 
 
+def print_change(title, series, step_key, quantities):
+    """Print the change of each quantity (label, key, unit, absolute)
+    between the two last rows of series, the error estimate."""
+    if len(series) < 2:
+        return
+    coarse, fine = series[-2:]
+    changes = []
+    for label, key, unit, absolute in quantities:
+        change = (f"{fine[key] - coarse[key]:+.3f} {unit}" if absolute else
+                  f"{100 * (fine[key] / coarse[key] - 1):+.2f} %")
+        changes.append(f"{label} {coarse[key]:.3f} -> {fine[key]:.3f} {unit} "
+                       f"(change {change})")
+    print(f"{title} {coarse[step_key]} -> {fine[step_key]}: " + ", ".join(changes))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build-release"))
@@ -119,29 +134,19 @@ def main():
             for key, _, _, absolute in QUANTITIES:
                 d = r[key] - reference[key]
                 r[f"{key}_difference"] = abs(d) if absolute else abs(d / reference[key])
-        finest = sorted(best, key=lambda r: r["level"])[-2:]
-        if len(finest) == 2:
-            coarse, fine = finest
-            print(f"mu = {mu}, Q{fine['degree']} levels {coarse['level']} -> "
-                  f"{fine['level']}: arc end (mid-plane) {coarse['arc_end_mid_deg']:.3f} -> "
-                  f"{fine['arc_end_mid_deg']:.3f} deg (change "
-                  f"{fine['arc_end_mid_deg'] - coarse['arc_end_mid_deg']:+.3f}), peak "
-                  f"pressure (parabola) {coarse['fitted_peak_pressure_mid_MPa']:.2f} -> "
-                  f"{fine['fitted_peak_pressure_mid_MPa']:.2f} MPa (change "
-                  f"{100 * (fine['fitted_peak_pressure_mid_MPa'] / coarse['fitted_peak_pressure_mid_MPa'] - 1):+.2f} %)")
+        print_change(f"mu = {mu}, Q{max(args.degrees)} levels",
+                     sorted(best, key=lambda r: r["level"]), "level",
+                     [("arc end (mid-plane)", "arc_end_mid_deg", "deg", True),
+                      ("peak pressure (parabola)", "fitted_peak_pressure_mid_MPa", "MPa",
+                       False)])
     for mu in sorted({r["mu"] for r in arc_rows}):
-        finest = sorted((r for r in arc_rows if r["mu"] == mu),
-                        key=lambda r: r["arc_end_refinements"])[-2:]
-        if len(finest) == 2:
-            coarse, fine = finest
-            print(f"mu = {mu}, Q{fine['degree']} level {fine['level']} graded toward the "
-                  f"arc end, {coarse['arc_end_refinements']} -> "
-                  f"{fine['arc_end_refinements']} arc end refinements: arc end "
-                  f"(mid-plane) {coarse['arc_end_mid_deg']:.3f} -> "
-                  f"{fine['arc_end_mid_deg']:.3f} deg (change "
-                  f"{fine['arc_end_mid_deg'] - coarse['arc_end_mid_deg']:+.3f}), (sheet "
-                  f"face) {coarse['arc_end_face_deg']:.3f} -> {fine['arc_end_face_deg']:.3f} "
-                  f"deg (change {fine['arc_end_face_deg'] - coarse['arc_end_face_deg']:+.3f})")
+        print_change(f"mu = {mu}, Q{max(args.degrees)} level {args.arc_end_base_level} "
+                     "graded toward the arc end, arc end refinements",
+                     sorted((r for r in arc_rows if r["mu"] == mu),
+                            key=lambda r: r["arc_end_refinements"]),
+                     "arc_end_refinements",
+                     [("arc end (mid-plane)", "arc_end_mid_deg", "deg", True),
+                      ("arc end (sheet face)", "arc_end_face_deg", "deg", True)])
     write_table(os.path.join(args.out, "pin_mesh_study.csv"), rows + arc_rows)
 
     # Plots: one CSV per series, then difference against wall time.
