@@ -8,7 +8,12 @@
  * increment) as a convergence sign; it does not converge on a small step
  * while the active set changes or the complementarity residual is large,
  * nor when the step stays above its tolerance or the test is disabled; it
- * stops on a non-finite residual and on a cycling active set.
+ * stops on a non-finite residual and on a cycling active set. With
+ * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
+ * solved fully and later ones to 0.1 times the previous residual; an
+ * active set that returns to an earlier one after an inexact solve
+ * switches the step to full solves instead of failing; the step test
+ * applies once the linear tolerance is below the Newton tolerance.
  */
 
 #include <common/solvers/newton_solver.h>
@@ -41,16 +46,21 @@ namespace
   NewtonStatistics
   run(const std::vector<Iteration> &script,
       const double                  step_tolerance,
-      const bool                    cycling = false)
+      const unsigned int            cycling_from      = 0,
+      const double                  factor            = 0.,
+      std::vector<double>          *linear_tolerances = nullptr)
   {
     NonlinearSolverParameters parameters;
-    parameters.max_iterations = 8;
-    parameters.tolerance      = 1e-10;
-    parameters.step_tolerance = step_tolerance;
+    parameters.max_iterations          = 8;
+    parameters.tolerance               = 1e-10;
+    parameters.step_tolerance          = step_tolerance;
+    parameters.linear_tolerance_factor = factor;
 
     unsigned int    k = 0;
     NewtonCallbacks callbacks;
-    callbacks.assemble_solve_and_update = [&](const double) {
+    callbacks.assemble_solve_and_update = [&](const double tolerance) {
+      if (linear_tolerances)
+        linear_tolerances->push_back(tolerance);
       return script[std::min<std::size_t>(k, script.size() - 1)].step;
     };
     callbacks.evaluate_residual = [&]() {
@@ -63,8 +73,9 @@ namespace
     callbacks.update_active_set = [&]() {
       return script[std::min<std::size_t>(k++, script.size() - 1)].n_changed;
     };
+    // After iteration k, k sets have been updated.
     callbacks.is_cycling = [&]() {
-      return cycling;
+      return cycling_from > 0 && k >= cycling_from;
     };
 
     ConditionalOStream quiet(std::cout, false);
@@ -121,5 +132,32 @@ main()
   // A non-finite residual stops at once, even with a tiny step.
   report("non-finite", run({{1., 1e-3, 1e-1, 3}, {1e-12, nan, 0, 0}}, 1e-8));
   // A cycling active set stops the loop.
-  report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, true));
+  report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, 1));
+
+  // Inexact Newton with factor 0.1: iteration 1 solved fully, later ones
+  // to 0.1 times the larger residual of the previous iteration.
+  std::vector<double> tolerances;
+  report("inexact",
+         run({{1., 1e-3, 1e-1, 4}, {1e-2, 1e-7, 1e-3, 1}, {1e-5, 1e-13, 0, 0}},
+             1e-8,
+             0,
+             0.1,
+             &tolerances));
+  for (const double t : tolerances)
+    deallog << "  linear tolerance " << t << std::endl;
+  // A set that returns to an earlier one after an inexact solve is not
+  // cycling: the step goes on with full solves, and fails only when a
+  // fully solved iterate cycles.
+  tolerances.clear();
+  report("inexact, cycling",
+         run({{1., 1e-3, 1e-1, 4}}, 1e-8, 2, 0.1, &tolerances));
+  for (const double t : tolerances)
+    deallog << "  linear tolerance " << t << std::endl;
+  // The round-off floor with inexact solves: once the linear tolerance
+  // falls below the Newton tolerance the step test applies again.
+  report("round-off floor, inexact",
+         run({{1., 1e-9, 1e-1, 10}, {5e-3, 7e-10, 0, 0}, {5e-10, 7e-10, 0, 0}},
+             1e-8,
+             0,
+             0.1));
 }

@@ -106,8 +106,10 @@ namespace Common
                          statistics.residuals.back().complementarity);
           const double increment =
             callbacks.assemble_solve_and_update(linear_tolerance);
-          NewtonResidual residual      = callbacks.evaluate_residual();
-          residual.increment           = increment;
+          // A solve to below the Newton tolerance is as good as exact.
+          const bool inexact_solve = linear_tolerance > parameters.tolerance;
+          NewtonResidual residual  = callbacks.evaluate_residual();
+          residual.increment       = increment;
           const unsigned int n_changed = callbacks.update_active_set();
           statistics.n_iterations      = it;
           statistics.residuals.push_back(residual);
@@ -137,7 +139,7 @@ namespace Common
               // The first iteration's step carries the load increment and
               // says nothing about round-off, nor does the step of an
               // inexact solve.
-              if (it > 1 && linear_tolerance == 0. &&
+              if (it > 1 && !inexact_solve &&
                   residual.increment < parameters.step_tolerance)
                 {
                   // A vanishing step with a large residual means that the
@@ -164,7 +166,7 @@ namespace Common
           if (callbacks.is_cycling())
             {
               // An inexact iterate may revisit a set; exact ones decide.
-              if (linear_tolerance > 0.)
+              if (inexact_solve)
                 {
                   inexact = false;
                   continue;
