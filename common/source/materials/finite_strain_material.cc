@@ -283,6 +283,27 @@ namespace Common
 
 
 
+    template <class Law>
+    void
+    HyperelasticMaterial<Law>::evaluate(const Tensor<2, 3>       &F,
+                                        const MaterialPointState &state,
+                                        const StressPart          part,
+                                        FiniteStrainResponse     &response,
+                                        MaterialPointState *updated_state) const
+    {
+      differentiate(
+        F,
+        [&](const ADNumber *F_ad, ADNumber *tau) {
+          static_cast<const Law &>(*this).stress(F_ad, part, tau);
+        },
+        response);
+      response.plastic = false;
+      if (updated_state != nullptr)
+        *updated_state = state;
+    }
+
+
+
     // ------------------------------------------------------------------
     // Parameters
 
@@ -411,24 +432,6 @@ namespace Common
 
 
 
-    void
-    NeoHookean::evaluate(const Tensor<2, 3>       &F,
-                         const MaterialPointState &state,
-                         const StressPart          part,
-                         FiniteStrainResponse     &response,
-                         MaterialPointState       *updated_state) const
-    {
-      differentiate(
-        F,
-        [&](const ADNumber *F_ad, ADNumber *tau) { stress(F_ad, part, tau); },
-        response);
-      response.plastic = false;
-      if (updated_state != nullptr)
-        *updated_state = state;
-    }
-
-
-
     bool
     NeoHookean::has_volumetric_split() const
     {
@@ -488,24 +491,6 @@ namespace Common
       if (part == StressPart::full)
         t = sum(t, scaled(identity<Number>(), kappa * J * (J - 1.)));
       std::copy(t.begin(), t.end(), tau);
-    }
-
-
-
-    void
-    NeoHookeanSplit::evaluate(const Tensor<2, 3>       &F,
-                              const MaterialPointState &state,
-                              const StressPart          part,
-                              FiniteStrainResponse     &response,
-                              MaterialPointState       *updated_state) const
-    {
-      differentiate(
-        F,
-        [&](const ADNumber *F_ad, ADNumber *tau) { stress(F_ad, part, tau); },
-        response);
-      response.plastic = false;
-      if (updated_state != nullptr)
-        *updated_state = state;
     }
 
 
@@ -584,24 +569,6 @@ namespace Common
         sum(scaled(identity<Number>(), lambda * trace(E)), scaled(E, 2. * mu));
       const Matrix<Number> t = product(product(F, S), transpose(F));
       std::copy(t.begin(), t.end(), tau);
-    }
-
-
-
-    void
-    SaintVenantKirchhoff::evaluate(const Tensor<2, 3>       &F,
-                                   const MaterialPointState &state,
-                                   const StressPart          part,
-                                   FiniteStrainResponse     &response,
-                                   MaterialPointState *updated_state) const
-    {
-      differentiate(
-        F,
-        [&](const ADNumber *F_ad, ADNumber *tau) { stress(F_ad, part, tau); },
-        response);
-      response.plastic = false;
-      if (updated_state != nullptr)
-        *updated_state = state;
     }
 
 
@@ -781,6 +748,12 @@ namespace Common
     {
       return K;
     }
+
+
+
+    template class HyperelasticMaterial<NeoHookean>;
+    template class HyperelasticMaterial<NeoHookeanSplit>;
+    template class HyperelasticMaterial<SaintVenantKirchhoff>;
 
 
 

@@ -606,12 +606,12 @@ namespace Common
 
     template <int dim>
     void
-    FiniteStrainSolid<dim>::assemble_system(
+    FiniteStrainSolid<dim>::assemble(
       const DoFHandler<dim>           &dof_handler,
       const AffineConstraints<double> &constraints,
       const VectorType                &u,
-      MatrixType                      &matrix,
-      VectorType                      &residual)
+      MatrixType                      *matrix,
+      VectorType                      &vector)
     {
       FullMatrix<double> K;
       Vector<double>     f;
@@ -622,16 +622,37 @@ namespace Common
                           const auto &dof_indices,
                           Scratch    &scratch) {
                         CellOutput output;
-                        output.matrix = &K;
+                        output.matrix = matrix != nullptr ? &K : nullptr;
                         output.force  = &f;
                         integrate_cell(cell, u_cell, scratch, output);
-                        f *= -1.;
-                        constraints.distribute_local_to_global(K,
-                                                               f,
-                                                               dof_indices,
-                                                               matrix,
-                                                               residual);
+                        if (matrix == nullptr)
+                          constraints.distribute_local_to_global(f,
+                                                                 dof_indices,
+                                                                 vector);
+                        else
+                          {
+                            f *= -1.;
+                            constraints.distribute_local_to_global(K,
+                                                                   f,
+                                                                   dof_indices,
+                                                                   *matrix,
+                                                                   vector);
+                          }
                       });
+    }
+
+
+
+    template <int dim>
+    void
+    FiniteStrainSolid<dim>::assemble_system(
+      const DoFHandler<dim>           &dof_handler,
+      const AffineConstraints<double> &constraints,
+      const VectorType                &u,
+      MatrixType                      &matrix,
+      VectorType                      &residual)
+    {
+      assemble(dof_handler, constraints, u, &matrix, residual);
     }
 
 
@@ -644,20 +665,7 @@ namespace Common
       const VectorType                &u,
       VectorType                      &internal_force)
     {
-      Vector<double> f;
-      for_owned_cells(dof_handler,
-                      u,
-                      [&](const auto &cell,
-                          const auto &u_cell,
-                          const auto &dof_indices,
-                          Scratch    &scratch) {
-                        CellOutput output;
-                        output.force = &f;
-                        integrate_cell(cell, u_cell, scratch, output);
-                        constraints.distribute_local_to_global(f,
-                                                               dof_indices,
-                                                               internal_force);
-                      });
+      assemble(dof_handler, constraints, u, nullptr, internal_force);
     }
 
 

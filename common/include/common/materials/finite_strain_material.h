@@ -174,22 +174,31 @@ namespace Common
       const FiniteStrainMaterialParameters &parameters);
 
     /**
-     * @brief Compressible neo-Hookean law,
-     * \f$\tau = \mu(b - I) + \lambda\ln J\,I\f$.
+     * @brief A hyperelastic law without history: evaluate() differentiates
+     * the law's stress<Number>(F, part, tau) (the derived class @p Law).
      */
-    class NeoHookean : public FiniteStrainMaterial
+    template <class Law>
+    class HyperelasticMaterial : public FiniteStrainMaterial
     {
     public:
-      /** @brief From Young's modulus (MPa) and Poisson's ratio
-       * (-1 < nu < 0.5). */
-      NeoHookean(const double youngs_modulus, const double poisson_ratio);
-
       void
       evaluate(const dealii::Tensor<2, 3> &F,
                const MaterialPointState   &state,
                const StressPart            part,
                FiniteStrainResponse       &response,
                MaterialPointState *updated_state = nullptr) const override;
+    };
+
+    /**
+     * @brief Compressible neo-Hookean law,
+     * \f$\tau = \mu(b - I) + \lambda\ln J\,I\f$.
+     */
+    class NeoHookean : public HyperelasticMaterial<NeoHookean>
+    {
+    public:
+      /** @brief From Young's modulus (MPa) and Poisson's ratio
+       * (-1 < nu < 0.5). */
+      NeoHookean(const double youngs_modulus, const double poisson_ratio);
 
       bool
       has_volumetric_split() const override;
@@ -216,19 +225,12 @@ namespace Common
      * \f$\bar b = J^{-2/3}b\f$ and \f$U = \frac{K}{2}(J - 1)^2\f$; at
      * \f$\nu = 0.5\f$ exactly incompressible (no U).
      */
-    class NeoHookeanSplit : public FiniteStrainMaterial
+    class NeoHookeanSplit : public HyperelasticMaterial<NeoHookeanSplit>
     {
     public:
       /** @brief From Young's modulus (MPa) and Poisson's ratio
        * (-1 < nu <= 0.5). */
       NeoHookeanSplit(const double youngs_modulus, const double poisson_ratio);
-
-      void
-      evaluate(const dealii::Tensor<2, 3> &F,
-               const MaterialPointState   &state,
-               const StressPart            part,
-               FiniteStrainResponse       &response,
-               MaterialPointState *updated_state = nullptr) const override;
 
       bool
       has_volumetric_split() const override;
@@ -260,19 +262,13 @@ namespace Common
      * @brief Saint Venant-Kirchhoff law: the second Piola-Kirchhoff stress
      * is Hooke's law of the Green-Lagrange strain.
      */
-    class SaintVenantKirchhoff : public FiniteStrainMaterial
+    class SaintVenantKirchhoff
+      : public HyperelasticMaterial<SaintVenantKirchhoff>
     {
     public:
       /** @brief From Young's modulus (MPa) and Poisson's ratio. */
       SaintVenantKirchhoff(const double youngs_modulus,
                            const double poisson_ratio);
-
-      void
-      evaluate(const dealii::Tensor<2, 3> &F,
-               const MaterialPointState   &state,
-               const StressPart            part,
-               FiniteStrainResponse       &response,
-               MaterialPointState *updated_state = nullptr) const override;
 
       bool
       has_volumetric_split() const override;

@@ -257,7 +257,17 @@ namespace Common
         Scratch                                                      &scratch,
         CellOutput &output) const;
 
-      /** Run @p work(cell, u_cell, scratch) on every locally owned cell. */
+      /** Internal forces into @p vector (no @p matrix), or the tangent and
+       * the residual -f_int (with @p matrix), condensed. */
+      void
+      assemble(const dealii::DoFHandler<dim>           &dof_handler,
+               const dealii::AffineConstraints<double> &constraints,
+               const VectorType                        &u,
+               MatrixType                              *matrix,
+               VectorType                              &vector);
+
+      /** Run @p work(cell, u_cell, dof_indices, scratch) on every locally
+       * owned cell. */
       template <typename Work>
       void
       for_owned_cells(const dealii::DoFHandler<dim> &dof_handler,
