@@ -118,10 +118,10 @@ namespace CgsRoller
     GeometryParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Roller material");
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Block material");
     Common::Problems::ContactRunParameters::declare_parameters(prm);
@@ -138,8 +138,12 @@ namespace CgsRoller
     geometry.parse_parameters(prm);
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);
-    roller_material.parse_parameters(prm, "Roller material");
-    block_material.parse_parameters(prm, "Block material");
     Common::Problems::ContactRunParameters::parse_parameters(prm);
+    roller_material.parse_parameters(prm,
+                                     "Roller material",
+                                     solid.finite_strain());
+    block_material.parse_parameters(prm,
+                                    "Block material",
+                                    solid.finite_strain());
   }
 } // namespace CgsRoller

@@ -7,7 +7,7 @@
 #define cgs_roller_parameters_h
 
 #include <common/geometry/mesh_parameters.h>
-#include <common/materials/linear_elastic.h>
+#include <common/materials/solid_material.h>
 #include <common/problems/contact_run_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -76,8 +76,8 @@ namespace CgsRoller
     GeometryParameters                         geometry;
     MeshParameters                             mesh;
     LoadingParameters                          loading;
-    Common::Materials::LinearElasticParameters roller_material;
-    Common::Materials::LinearElasticParameters block_material;
+    Common::Materials::SolidMaterialParameters roller_material;
+    Common::Materials::SolidMaterialParameters block_material;
   };
 } // namespace CgsRoller
 

@@ -13,7 +13,7 @@
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
 #include <common/physics/boundary_conditions.h>
-#include <common/physics/small_strain_elasticity.h>
+#include <common/physics/solid_model.h>
 #include <common/problems/contact_run.h>
 #include <common/solvers/linear_solver.h>
 
@@ -172,12 +172,12 @@ namespace CgsRoller
                                    "the top of the roller");
 
     setup_contact_problem(
-      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
         mapping,
         fe,
-        Common::Materials::linear_elastic_materials<dim>(
-          {{MaterialIds::roller, parameters.roller_material},
-           {MaterialIds::block, parameters.block_material}})),
+        {{MaterialIds::roller, parameters.roller_material},
+         {MaterialIds::block, parameters.block_material}}),
       std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
         dof_handler,
         mapping,

@@ -191,10 +191,10 @@ namespace LoadedPin
     GeometryParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Pin material");
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Sheet material");
     Common::Problems::ContactRunParameters::declare_parameters(prm);
@@ -211,8 +211,10 @@ namespace LoadedPin
     geometry.parse_parameters(prm);
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);
-    pin_material.parse_parameters(prm, "Pin material");
-    sheet_material.parse_parameters(prm, "Sheet material");
     Common::Problems::ContactRunParameters::parse_parameters(prm);
+    pin_material.parse_parameters(prm, "Pin material", solid.finite_strain());
+    sheet_material.parse_parameters(prm,
+                                    "Sheet material",
+                                    solid.finite_strain());
   }
 } // namespace LoadedPin

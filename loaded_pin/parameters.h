@@ -7,7 +7,7 @@
 #define loaded_pin_parameters_h
 
 #include <common/geometry/mesh_parameters.h>
-#include <common/materials/linear_elastic.h>
+#include <common/materials/solid_material.h>
 #include <common/problems/contact_run_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -81,8 +81,8 @@ namespace LoadedPin
     GeometryParameters                         geometry;
     MeshParameters                             mesh;
     LoadingParameters                          loading;
-    Common::Materials::LinearElasticParameters pin_material;
-    Common::Materials::LinearElasticParameters sheet_material;
+    Common::Materials::SolidMaterialParameters pin_material;
+    Common::Materials::SolidMaterialParameters sheet_material;
   };
 } // namespace LoadedPin
 

@@ -7,7 +7,7 @@
 
 #include <common/geometry/two_body_meshes.h>
 #include <common/physics/boundary_conditions.h>
-#include <common/physics/small_strain_elasticity.h>
+#include <common/physics/solid_model.h>
 #include <common/problems/contact_run.h>
 
 #include <deal.II/base/mpi.h>
@@ -95,12 +95,12 @@ namespace LoadedPin
                         "the lug's tip");
 
     setup_contact_problem(
-      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
         mapping,
         fe,
-        Common::Materials::linear_elastic_materials<dim>(
-          {{MaterialIds::pin, parameters.pin_material},
-           {MaterialIds::sheet, parameters.sheet_material}})),
+        {{MaterialIds::pin, parameters.pin_material},
+         {MaterialIds::sheet, parameters.sheet_material}}),
       std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
         dof_handler,
         mapping,

@@ -207,10 +207,10 @@ namespace Punch3d
     GeometryParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Punch material");
-    Common::Materials::LinearElasticParameters::declare_parameters(
+    Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Foundation material");
     Common::Problems::ContactRunParameters::declare_parameters(prm);
@@ -228,9 +228,13 @@ namespace Punch3d
     geometry.parse_parameters(prm);
     mesh.parse_parameters(prm);
     loading.parse_parameters(prm);
-    punch_material.parse_parameters(prm, "Punch material");
-    foundation_material.parse_parameters(prm, "Foundation material");
     Common::Problems::ContactRunParameters::parse_parameters(prm);
+    punch_material.parse_parameters(prm,
+                                    "Punch material",
+                                    solid.finite_strain());
+    foundation_material.parse_parameters(prm,
+                                         "Foundation material",
+                                         solid.finite_strain());
   }
 
 

@@ -7,7 +7,7 @@
 #define punch3d_parameters_h
 
 #include <common/geometry/mesh_parameters.h>
-#include <common/materials/linear_elastic.h>
+#include <common/materials/solid_material.h>
 #include <common/problems/contact_run_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -114,8 +114,8 @@ namespace Punch3d
     GeometryParameters                         geometry;
     MeshParameters                             mesh;
     LoadingParameters                          loading;
-    Common::Materials::LinearElasticParameters punch_material;
-    Common::Materials::LinearElasticParameters foundation_material;
+    Common::Materials::SolidMaterialParameters punch_material;
+    Common::Materials::SolidMaterialParameters foundation_material;
   };
 } // namespace Punch3d
 

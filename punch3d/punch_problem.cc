@@ -16,6 +16,7 @@
 #include <common/physics/boundary_displacement.h>
 #include <common/physics/boundary_loads.h>
 #include <common/physics/rigid_body.h>
+#include <common/physics/solid_model.h>
 #include <common/problems/contact_run.h>
 
 #include <deal.II/base/function.h>
@@ -161,12 +162,12 @@ namespace Punch3d
                                    MaterialIds::foundation);
 
     this->setup_contact_problem(
-      std::make_unique<Common::Physics::SmallStrainElasticity<dim>>(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
         mapping,
         fe,
-        Common::Materials::linear_elastic_materials<dim>(
-          {{MaterialIds::punch, parameters.punch_material},
-           {MaterialIds::foundation, parameters.foundation_material}}),
+        {{MaterialIds::punch, parameters.punch_material},
+         {MaterialIds::foundation, parameters.foundation_material}},
         kinematics()),
       make_contact_geometry(),
       parameters.foundation_material.youngs_modulus);

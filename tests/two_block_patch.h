@@ -296,11 +296,15 @@ namespace TwoBlockPatch
 
     /**
      * Materials, physics and the contact problem, with the closed
-     * Dirichlet and hanging-node @p constraints.
+     * Dirichlet and hanging-node @p constraints; the solid is the
+     * small-strain elastic one of the setting, or @p solid if given.
      */
     void
-    setup_problem(const AffineConstraints<double> &constraints)
+    setup_problem(
+      const AffineConstraints<double>                     &constraints,
+      std::unique_ptr<Common::Physics::SolidOperator<dim>> solid = nullptr)
     {
+      other_solid = std::move(solid);
       Common::Materials::LinearElasticParameters lower_parameters,
         upper_parameters;
       lower_parameters.youngs_modulus = setting.E_lower;
@@ -333,7 +337,7 @@ namespace TwoBlockPatch
         std::make_unique<Common::Problems::ContactNewtonProblem<dim>>(
           dof_handler,
           mapping,
-          *physics,
+          other_solid ? *other_solid : *physics,
           *contact_geometry,
           contact,
           solver_parameters,
@@ -427,6 +431,8 @@ namespace TwoBlockPatch
     const MappingQ<dim>                                          mapping;
     DoFHandler<dim>                                              dof_handler;
     std::unique_ptr<Common::Physics::SmallStrainElasticity<dim>> physics;
+    /** The solid given to setup_problem(), if any. */
+    std::unique_ptr<Common::Physics::SolidOperator<dim>> other_solid;
 
     Common::Contact::ContactParameters         contact;
     Common::Solvers::LinearSolverParameters    solver_parameters;

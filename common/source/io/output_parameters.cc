@@ -29,6 +29,18 @@ namespace Common
                           Patterns::Bool(),
                           "Write PNG plots with gnuplot (skipped with a "
                           "notice when gnuplot is not installed).");
+        prm.declare_entry(
+          "Reaction boundary ids",
+          "",
+          Patterns::List(Patterns::Integer(0, 255)),
+          "Comma-separated boundary ids whose reaction forces are written, "
+          "for every accepted load step, to reactions.csv against "
+          "pseudo-time: the sum over every DoF of the boundary of the "
+          "internal forces minus the applied loads, per component (a node "
+          "the boundary shares with another support counts in both, a "
+          "contact node adds its contact force). Units: "
+          "N per mm of thickness in plane strain, N over the full ring when "
+          "axisymmetric, N in 3D. Empty: no file.");
         prm.declare_entry("Verbosity",
                           "normal",
                           Patterns::Selection("quiet|normal|verbose"),
@@ -52,6 +64,10 @@ namespace Common
         AssertThrow(std::filesystem::path(directory).filename() != "output",
                     ExcMessage("Output: 'Output directory' must not be named "
                                "'output'."));
+        reaction_boundary_ids.clear();
+        for (const auto &id :
+             Utilities::split_string_list(prm.get("Reaction boundary ids")))
+          reaction_boundary_ids.push_back(Utilities::string_to_int(id));
         write_graphical_output = prm.get_bool("Write graphical output");
         write_plots            = prm.get_bool("Write plots");
         const std::string v    = prm.get("Verbosity");

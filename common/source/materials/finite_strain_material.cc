@@ -326,8 +326,9 @@ namespace Common
           "(which needs the mixed element); Saint Venant-Kirchhoff: Hooke's "
           "law between the second Piola-Kirchhoff stress and the "
           "Green-Lagrange strain; J2 plasticity: von Mises plasticity with "
-          "Hencky elasticity and the hardening entries below. Ignored "
-          "under small-strain kinematics.");
+          "Hencky elasticity and the hardening entries below. Under "
+          "small-strain kinematics every elastic law is Hooke's law with "
+          "these constants, and J2 plasticity is refused.");
         HardeningParameters::declare_parameters(prm);
       }
       prm.leave_subsection();

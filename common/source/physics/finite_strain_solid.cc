@@ -93,7 +93,7 @@ namespace Common
     void
     FiniteStrainParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Finite strain");
+      prm.enter_subsection("Solid");
       {
         prm.declare_entry(
           "Element technology",
@@ -121,6 +121,14 @@ namespace Common
           "Exactly incompressible laws: the augmentation ends when the "
           "projected J differs from 1 by less than this at every "
           "quadrature point. Dimensionless, positive.");
+        prm.declare_entry(
+          "Maximum augmentations",
+          "30",
+          Patterns::Integer(1),
+          "Exactly incompressible laws: the most multiplier updates (each "
+          "followed by a Newton solve) in one load step; a step that still "
+          "violates the tolerance after them is cut back. Positive "
+          "integer.");
       }
       prm.leave_subsection();
     }
@@ -130,7 +138,7 @@ namespace Common
     void
     FiniteStrainParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Finite strain");
+      prm.enter_subsection("Solid");
       {
         const std::string name = prm.get("Element technology");
         technology             = name == "F-bar" ? ElementTechnology::f_bar :
@@ -139,14 +147,15 @@ namespace Common
         penalty_factor = prm.get_double("Incompressibility penalty factor");
         incompressibility_tolerance =
           prm.get_double("Incompressibility tolerance");
+        max_augmentations = prm.get_integer("Maximum augmentations");
       }
       prm.leave_subsection();
       AssertThrow(penalty_factor > 0.,
-                  ExcMessage("Finite strain: Incompressibility penalty "
-                             "factor must be positive."));
-      AssertThrow(incompressibility_tolerance > 0.,
-                  ExcMessage("Finite strain: Incompressibility tolerance "
+                  ExcMessage("Solid: 'Incompressibility penalty factor' "
                              "must be positive."));
+      AssertThrow(incompressibility_tolerance > 0.,
+                  ExcMessage("Solid: 'Incompressibility tolerance' must "
+                             "be positive."));
     }
 
 
@@ -226,6 +235,45 @@ namespace Common
                                  "volumetric-isochoric split (neo-Hookean "
                                  "split or J2 plasticity)."));
         }
+    }
+
+
+
+    namespace
+    {
+      std::map<types::material_id, const Materials::FiniteStrainMaterial *>
+      raw_pointers(
+        const std::map<types::material_id,
+                       std::shared_ptr<const Materials::FiniteStrainMaterial>>
+          &materials)
+      {
+        std::map<types::material_id, const Materials::FiniteStrainMaterial *>
+          pointers;
+        for (const auto &[id, law] : materials)
+          pointers[id] = law.get();
+        return pointers;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    FiniteStrainSolid<dim>::FiniteStrainSolid(
+      const Mapping<dim>       &mapping,
+      const FiniteElement<dim> &fe,
+      const std::map<types::material_id,
+                     std::shared_ptr<const Materials::FiniteStrainMaterial>>
+                                   &materials,
+      const Kinematics              kinematics,
+      const FiniteStrainParameters &parameters)
+      : FiniteStrainSolid(mapping,
+                          fe,
+                          raw_pointers(materials),
+                          kinematics,
+                          parameters)
+    {
+      for (const auto &[id, law] : materials)
+        owned_materials.push_back(law);
     }
 
 
@@ -742,6 +790,28 @@ namespace Common
                           });
         }
       return Utilities::MPI::max(largest, dof_handler.get_communicator());
+    }
+
+
+
+    template <int dim>
+    bool
+    FiniteStrainSolid<dim>::update_multipliers(
+      const DoFHandler<dim> &dof_handler,
+      const VectorType      &u)
+    {
+      return augment(dof_handler, u) > parameters.incompressibility_tolerance;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    FiniteStrainSolid<dim>::max_multiplier_updates() const
+    {
+      return has_incompressibility_multipliers() ?
+               parameters.max_augmentations :
+               0;
     }
 
 

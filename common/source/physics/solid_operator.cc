@@ -30,6 +30,25 @@ namespace Common
     SolidOperator<dim>::restore()
     {}
 
+
+
+    template <int dim>
+    bool
+    SolidOperator<dim>::update_multipliers(const DoFHandler<dim> &,
+                                           const VectorType &)
+    {
+      return false;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    SolidOperator<dim>::max_multiplier_updates() const
+    {
+      return 0;
+    }
+
     template double
     measure_factor(const Kinematics, const Point<2> &);
     template double

@@ -116,7 +116,8 @@ namespace Common
                                         "tangential_traction.gp",
                                         "slip.png",
                                         "slip.gp",
-                                        "solution.pvd"};
+                                        "solution.pvd",
+                                        "reactions.csv"};
       for (const auto &file : result_files())
         files.push_back(file);
       if (!begin_run<dim>(console,

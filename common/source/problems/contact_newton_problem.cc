@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 namespace Common
@@ -475,8 +476,43 @@ namespace Common
         return contact_enforcement->is_cycling();
       };
 
-      const auto statistics =
+      auto statistics =
         Solvers::solve_newton(nonlinear_solver_parameters, callbacks, verbose);
+      // Constraints of the solid enforced by an augmented Lagrangian: update
+      // the multipliers at the converged state and solve again until the
+      // constraints hold.
+      while (statistics.converged &&
+             solid_operator.update_multipliers(dof_handler, solution))
+        {
+          if (statistics.n_augmentations ==
+              solid_operator.max_multiplier_updates())
+            {
+              statistics.converged = false;
+              statistics.failure =
+                "the solid's constraints (incompressibility) still violated "
+                "after " +
+                std::to_string(statistics.n_augmentations) +
+                " multiplier updates";
+              break;
+            }
+          verbose << "  Multiplier update " << statistics.n_augmentations + 1
+                  << std::endl;
+          const auto again = Solvers::solve_newton(nonlinear_solver_parameters,
+                                                   callbacks,
+                                                   verbose);
+          statistics.n_iterations += again.n_iterations;
+          statistics.converged         = again.converged;
+          statistics.converged_on_step = again.converged_on_step;
+          statistics.failure           = again.failure;
+          statistics.residuals.insert(statistics.residuals.end(),
+                                      again.residuals.begin(),
+                                      again.residuals.end());
+          statistics.active_set_changes.insert(
+            statistics.active_set_changes.end(),
+            again.active_set_changes.begin(),
+            again.active_set_changes.end());
+          ++statistics.n_augmentations;
+        }
       solve_times.newton += IO::seconds_since(start);
       solve_times.contact_cpu += IO::process_cpu_seconds() - cpu_start;
       return statistics;
@@ -533,6 +569,47 @@ namespace Common
                        times.begin() + times.size() / 2,
                        times.end());
       return times[times.size() / 2];
+    }
+
+
+
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    ContactNewtonProblem<dim>::reaction_forces(
+      const std::vector<types::boundary_id> &boundary_ids,
+      const Solvers::LoadState              &state,
+      const ExternalLoad                    &load)
+    {
+      // Unconstrained nodal forces: every DoF keeps its own, hanging nodes
+      // included, so that the sum over a boundary is the total force.
+      AffineConstraints<double> none;
+      none.close();
+      TrilinosWrappers::MPI::Vector f(locally_owned_dofs, mpi_communicator);
+      solid_operator.assemble_internal_force(dof_handler, none, solution, f);
+      f.compress(VectorOperation::add);
+      TrilinosWrappers::MPI::Vector f_ext(locally_owned_dofs, mpi_communicator);
+      load.add(state, none, f_ext);
+      f_ext.compress(VectorOperation::add);
+      f -= f_ext;
+
+      std::vector<Tensor<1, dim>> reactions(boundary_ids.size());
+      for (unsigned int b = 0; b < boundary_ids.size(); ++b)
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              ComponentMask mask(dim, false);
+              mask.set(c, true);
+              const IndexSet dofs =
+                DoFTools::extract_boundary_dofs(dof_handler,
+                                                mask,
+                                                {boundary_ids[b]});
+              for (const auto dof : dofs)
+                if (locally_owned_dofs.is_element(dof))
+                  reactions[b][c] += f(dof);
+            }
+          reactions[b] = Utilities::MPI::sum(reactions[b], mpi_communicator);
+        }
+      return reactions;
     }
 
 

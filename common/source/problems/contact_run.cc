@@ -226,6 +226,24 @@ namespace Common
       for (const auto &p : solid_fields)
         postprocessors.push_back(p.get());
 
+      // Reaction forces on the chosen boundaries, one row per accepted
+      // step, written when the load program has ended.
+      std::vector<types::boundary_id> reaction_ids;
+      {
+        const auto on_mesh = dof_handler.get_triangulation().get_boundary_ids();
+        for (const unsigned int id : output.reaction_boundary_ids)
+          {
+            AssertThrow(std::find(on_mesh.begin(), on_mesh.end(), id) !=
+                          on_mesh.end(),
+                        ExcMessage("Output: 'Reaction boundary ids' names "
+                                   "boundary id " +
+                                   std::to_string(id) +
+                                   ", which the mesh does not have."));
+            reaction_ids.push_back(id);
+          }
+      }
+      std::vector<std::vector<double>> reaction_rows;
+
       Solvers::LoadStepCallbacks callbacks;
       callbacks.solve = [&](const Solvers::LoadState &state) {
         return problem.solve(state,
@@ -236,6 +254,17 @@ namespace Common
                              const Solvers::NewtonStatistics &statistics) {
         problem.commit();
         report(step, statistics);
+        if (!reaction_ids.empty())
+          {
+            std::vector<double> row = {static_cast<double>(step.step),
+                                       step.state.time,
+                                       step.state.load_factor()};
+            for (const auto &force :
+                 problem.reaction_forces(reaction_ids, step.state, load))
+              for (unsigned int c = 0; c < dim; ++c)
+                row.push_back(force[c]);
+            reaction_rows.push_back(std::move(row));
+          }
         if (output.write_graphical_output)
           {
             std::vector<IO::NodalScalarField> contact_fields;
@@ -259,6 +288,22 @@ namespace Common
       const auto start = std::chrono::steady_clock::now();
       const auto stepping =
         Solvers::run_load_program(program, callbacks, console);
+      if (!reaction_ids.empty() && console.is_root())
+        {
+          std::ofstream csv(output.path("reactions.csv"));
+          csv << "step,pseudo_time,load_factor";
+          for (const auto id : reaction_ids)
+            for (unsigned int c = 0; c < dim; ++c)
+              csv << ",boundary_" << id << "_R"
+                  << "xyz"[c] << "_N";
+          csv << '\n' << std::setprecision(10);
+          for (const auto &row : reaction_rows)
+            {
+              for (unsigned int i = 0; i < row.size(); ++i)
+                csv << (i > 0 ? "," : "") << row[i];
+              csv << '\n';
+            }
+        }
       const auto &times = problem.times();
       timings.set("contact_setup_s", times.contact_setup)
         .set("contact_solve_s", times.contact_setup + times.newton)

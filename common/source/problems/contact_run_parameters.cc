@@ -14,6 +14,7 @@ namespace Common
       const std::vector<Solvers::LoadChannel> &channels,
       const std::map<std::string, double>     &default_end_values)
     {
+      Physics::SolidParameters::declare_parameters(prm);
       Contact::ContactParameters::declare_parameters(prm);
       Solvers::NonlinearSolverParameters::declare_parameters(prm);
       Solvers::LinearSolverParameters::declare_parameters(prm);
@@ -31,6 +32,7 @@ namespace Common
       ParameterHandler                        &prm,
       const std::vector<Solvers::LoadChannel> &channels)
     {
+      solid.parse_parameters(prm);
       contact.parse_parameters(prm);
       nonlinear_solver.parse_parameters(prm);
       linear_solver.parse_parameters(prm);

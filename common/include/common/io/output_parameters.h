@@ -46,9 +46,12 @@ namespace Common
       path(const std::string &file_name) const;
 
       std::string directory;
-      bool        write_graphical_output;
-      bool        write_plots;
-      Verbosity   verbosity;
+      /** Boundary ids whose reaction forces are written to reactions.csv
+       * after every accepted step (empty: no file). */
+      std::vector<unsigned int> reaction_boundary_ids;
+      bool                      write_graphical_output;
+      bool                      write_plots;
+      Verbosity                 verbosity;
     };
   } // namespace IO
 } // namespace Common

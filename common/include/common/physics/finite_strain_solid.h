@@ -58,14 +58,14 @@ namespace Common
     };
 
     /**
-     * @brief Parameters of subsection "Finite strain": the element
+     * @brief The finite-strain entries of subsection "Solid": the element
      * technology and the augmented Lagrangian of exact incompressibility.
      */
     struct FiniteStrainParameters
     {
       /** @brief Declare "Element technology", "Incompressibility penalty
-       * factor" and "Incompressibility tolerance" in subsection "Finite
-       * strain". */
+       * factor", "Incompressibility tolerance" and "Maximum augmentations"
+       * in subsection "Solid". */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
@@ -78,6 +78,8 @@ namespace Common
       double penalty_factor = 1e3;
       /** Largest \f$|\tilde J - 1|\f$ that ends the augmentation. */
       double incompressibility_tolerance = 1e-8;
+      /** Most multiplier updates in one load step. */
+      unsigned int max_augmentations = 30;
     };
 
     /**
@@ -112,6 +114,16 @@ namespace Common
                        const Materials::FiniteStrainMaterial *> &materials,
         const Kinematics                                         kinematics,
         const FiniteStrainParameters                            &parameters);
+
+      /** @brief As above, with the laws owned by the solid. */
+      FiniteStrainSolid(
+        const dealii::Mapping<dim>       &mapping,
+        const dealii::FiniteElement<dim> &fe,
+        const std::map<dealii::types::material_id,
+                       std::shared_ptr<const Materials::FiniteStrainMaterial>>
+                                     &materials,
+        const Kinematics              kinematics,
+        const FiniteStrainParameters &parameters);
 
       /** @brief The kinematics of the model. */
       Kinematics
@@ -162,6 +174,17 @@ namespace Common
       double
       augment(const dealii::DoFHandler<dim> &dof_handler, const VectorType &u);
 
+      /** @brief augment(), true if the largest \f$|\tilde J - 1|\f$
+       * before the update exceeded the incompressibility tolerance. */
+      bool
+      update_multipliers(const dealii::DoFHandler<dim> &dof_handler,
+                         const VectorType              &u) override;
+
+      /** @brief "Maximum augmentations" if some cell is exactly
+       * incompressible, else 0. */
+      unsigned int
+      max_multiplier_updates() const override;
+
       /** @brief The tolerance that ends augment() loops. */
       double
       incompressibility_tolerance() const;
@@ -202,6 +225,9 @@ namespace Common
     private:
       const dealii::Mapping<dim>       &mapping;
       const dealii::FiniteElement<dim> &fe;
+      /** Laws the solid owns (second constructor). */
+      std::vector<std::shared_ptr<const Materials::FiniteStrainMaterial>>
+        owned_materials;
       const std::map<dealii::types::material_id,
                      const Materials::FiniteStrainMaterial *>
                                    materials;

@@ -112,6 +112,25 @@ namespace Common
       virtual void
       restore();
 
+      /**
+       * @brief After a converged solve at @p u, update the multipliers of
+       * the constraints this solid enforces by an augmented Lagrangian
+       * (exact incompressibility). Collective over the communicator of
+       * @p dof_handler.
+       * @return True if a constraint was violated beyond its tolerance, so
+       * that the step must be solved again with the updated multipliers.
+       * The default (no such constraints) returns false.
+       */
+      virtual bool
+      update_multipliers(const dealii::DoFHandler<dim> &dof_handler,
+                         const VectorType              &u);
+
+      /** @brief Largest number of update_multipliers() calls that may
+       * return true in one load step before the step counts as failed; 0
+       * (the default) for a solid without multipliers. */
+      virtual unsigned int
+      max_multiplier_updates() const;
+
       /** @brief Forget every quantity kept between assemblies (after the
        * mesh or the DoFs changed, or to time a fresh assembly). */
       virtual void

@@ -32,6 +32,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace Common
 {
@@ -167,6 +168,19 @@ namespace Common
       time_fixed_active_set_solve(const Solvers::LoadState &state,
                                   const ExternalLoad       &load,
                                   const unsigned int        n_repeats = 3);
+
+      /**
+       * @brief Reaction force on each boundary of @p boundary_ids at the
+       * current state: the sum over the boundary's DoFs of the internal
+       * forces minus the external load at @p state, per component (N;
+       * per mm of thickness in plane strain, the full ring when
+       * axisymmetric). Collective; the result is the same on every rank.
+       */
+      std::vector<dealii::Tensor<1, dim>>
+      reaction_forces(
+        const std::vector<dealii::types::boundary_id> &boundary_ids,
+        const Solvers::LoadState                      &state,
+        const ExternalLoad                            &load);
 
       /** @brief Displacement (mm): readable at the DoFs of the rank's own
        * cells and of the contact pair. */

@@ -11,6 +11,7 @@
 #include <common/contact/contact_parameters.h>
 #include <common/io/output_parameters.h>
 #include <common/io/run_control.h>
+#include <common/physics/solid_model.h>
 #include <common/solvers/linear_solver.h>
 #include <common/solvers/load_program.h>
 #include <common/solvers/newton_solver.h>
@@ -26,8 +27,8 @@ namespace Common
   namespace Problems
   {
     /**
-     * @brief Subsections "Contact", "Nonlinear solver", "Linear solver",
-     * "Load program", "Output" and "Run control".
+     * @brief Subsections "Solid", "Contact", "Nonlinear solver", "Linear
+     * solver", "Load program", "Output" and "Run control".
      */
     struct ContactRunParameters
     {
@@ -53,6 +54,7 @@ namespace Common
                        const std::vector<Solvers::LoadChannel> &channels = {
                          Solvers::load_factor_channel()});
 
+      Physics::SolidParameters           solid;
       Contact::ContactParameters         contact;
       Solvers::NonlinearSolverParameters nonlinear_solver;
       Solvers::LinearSolverParameters    linear_solver;

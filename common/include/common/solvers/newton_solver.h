@@ -91,6 +91,10 @@ namespace Common
       std::string                 failure;
       std::vector<NewtonResidual> residuals;
       std::vector<unsigned int>   active_set_changes;
+      /** Newton solves repeated after an update of the solid's
+       * multipliers (augmented Lagrangian); their iterations are counted
+       * in n_iterations. */
+      unsigned int n_augmentations = 0;
     };
 
     /**
