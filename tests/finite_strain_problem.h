@@ -303,6 +303,42 @@ namespace FiniteStrainTest
       return std::sqrt(sum);
     }
   };
+  /**
+   * Thick-walled cylinder as a quarter annulus about the origin (2D):
+   * symmetry on x = 0 and y = 0, and the inner surface r = @p A moved
+   * radially by @p radial_per_load times the load (mm). Returns the
+   * inner DoFs weighted by the radial direction, whose reaction() is the
+   * radial force on the inner surface (N per mm of depth).
+   */
+  inline std::vector<std::pair<types::global_dof_index, double>>
+  prescribe_quarter_annulus(Problem<2>  &problem,
+                            const double A,
+                            const double radial_per_load)
+  {
+    problem.prescribe(
+      problem.dofs(0, [](const Point<2> &x) { return std::abs(x[0]) < 1e-10; }),
+      [](auto, double) { return 0.; });
+    problem.prescribe(
+      problem.dofs(1, [](const Point<2> &x) { return std::abs(x[1]) < 1e-10; }),
+      [](auto, double) { return 0.; });
+    std::vector<std::pair<types::global_dof_index, double>> radial;
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        const auto inner = problem.dofs(c, [A](const Point<2> &x) {
+          return std::abs(x.norm() - A) < 1e-8;
+        });
+        problem.prescribe(
+          inner,
+          [&problem, c, A, radial_per_load](const types::global_dof_index dof,
+                                            const double load) {
+            return load * radial_per_load * problem.support_points.at(dof)[c] /
+                   A;
+          });
+        for (const auto dof : inner)
+          radial.emplace_back(dof, problem.support_points.at(dof)[c] / A);
+      }
+    return radial;
+  }
 } // namespace FiniteStrainTest
 
 #endif

@@ -36,27 +36,9 @@ main(int argc, char **argv)
   parameters.technology = Physics::ElementTechnology::mixed;
   FiniteStrainTest::Problem<2> problem(triangulation, 2, rubber, parameters);
 
-  const auto on_inner = [A](const Point<2> &x) {
-    return std::abs(x.norm() - A) < 1e-8;
-  };
-  problem.prescribe(
-    problem.dofs(0, [](const Point<2> &x) { return std::abs(x[0]) < 1e-10; }),
-    [](auto, double) { return 0.; });
-  problem.prescribe(
-    problem.dofs(1, [](const Point<2> &x) { return std::abs(x[1]) < 1e-10; }),
-    [](auto, double) { return 0.; });
-  std::vector<std::pair<types::global_dof_index, double>> radial;
-  for (unsigned int c = 0; c < 2; ++c)
-    {
-      const auto inner = problem.dofs(c, on_inner);
-      problem.prescribe(inner,
-                        [&problem, c](const types::global_dof_index dof,
-                                      const double                  load) {
-                          return load * problem.support_points.at(dof)[c];
-                        });
-      for (const auto dof : inner)
-        radial.emplace_back(dof, problem.support_points.at(dof)[c] / A);
-    }
+  // The load is the inner stretch minus 1.
+  const auto radial =
+    FiniteStrainTest::prescribe_quarter_annulus(problem, A, A);
   // A DoF on the outer surface at y = 0 (radial there is x).
   const auto outer = problem.dofs(0, [B](const Point<2> &x) {
     return std::abs(x[0] - B) < 1e-8 && std::abs(x[1]) < 1e-10;

@@ -64,27 +64,9 @@ main(int argc, char **argv)
   // Newton reaches it in two iterations.
   problem.newton_tolerance = 1e-6;
 
-  problem.prescribe(
-    problem.dofs(0, [](const Point<2> &x) { return std::abs(x[0]) < 1e-10; }),
-    [](auto, double) { return 0.; });
-  problem.prescribe(
-    problem.dofs(1, [](const Point<2> &x) { return std::abs(x[1]) < 1e-10; }),
-    [](auto, double) { return 0.; });
   // The load is the inner radial displacement u(a) (mm).
-  std::vector<std::pair<types::global_dof_index, double>> radial;
-  for (unsigned int c = 0; c < 2; ++c)
-    {
-      const auto inner = problem.dofs(c, [A](const Point<2> &x) {
-        return std::abs(x.norm() - A) < 1e-8;
-      });
-      problem.prescribe(inner,
-                        [&problem, c, A](const types::global_dof_index dof,
-                                         const double                  load) {
-                          return load * problem.support_points.at(dof)[c] / A;
-                        });
-      for (const auto dof : inner)
-        radial.emplace_back(dof, problem.support_points.at(dof)[c] / A);
-    }
+  const auto radial =
+    FiniteStrainTest::prescribe_quarter_annulus(problem, A, 1.);
 
   bool converged = true, pressures = true, zones = true;
   for (unsigned int step = 0; step <= 6; ++step)
