@@ -401,13 +401,50 @@ namespace Common
     // ------------------------------------------------------------------
     // Compressible neo-Hookean
 
-    NeoHookean::NeoHookean(const double E, const double nu)
+    template <class Law>
+    CompressibleHyperelasticMaterial<Law>::CompressibleHyperelasticMaterial(
+      const double       E,
+      const double       nu,
+      const std::string &name)
     {
       AssertThrow(E > 0. && nu > -1. && nu < 0.5,
-                  ExcMessage("neo-Hookean: needs E > 0 and -1 < nu < 0.5."));
+                  ExcMessage(name + ": needs E > 0 and -1 < nu < 0.5."));
       mu     = E / (2. * (1. + nu));
       lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
     }
+
+
+
+    template <class Law>
+    bool
+    CompressibleHyperelasticMaterial<Law>::has_volumetric_split() const
+    {
+      return false;
+    }
+
+
+
+    template <class Law>
+    double
+    CompressibleHyperelasticMaterial<Law>::shear_modulus() const
+    {
+      return mu;
+    }
+
+
+
+    template <class Law>
+    double
+    CompressibleHyperelasticMaterial<Law>::bulk_modulus() const
+    {
+      return lambda + 2. * mu / 3.;
+    }
+
+
+
+    NeoHookean::NeoHookean(const double E, const double nu)
+      : CompressibleHyperelasticMaterial<NeoHookean>(E, nu, "neo-Hookean")
+    {}
 
 
 
@@ -429,30 +466,6 @@ namespace Common
       const Matrix<Number> t = sum(scaled(sum(b, identity<Number>(-1.)), mu),
                                    scaled(identity<Number>(), lambda * log(J)));
       std::copy(t.begin(), t.end(), tau);
-    }
-
-
-
-    bool
-    NeoHookean::has_volumetric_split() const
-    {
-      return false;
-    }
-
-
-
-    double
-    NeoHookean::shear_modulus() const
-    {
-      return mu;
-    }
-
-
-
-    double
-    NeoHookean::bulk_modulus() const
-    {
-      return lambda + 2. * mu / 3.;
     }
 
 
@@ -543,13 +556,11 @@ namespace Common
     // Saint Venant-Kirchhoff
 
     SaintVenantKirchhoff::SaintVenantKirchhoff(const double E, const double nu)
-    {
-      AssertThrow(E > 0. && nu > -1. && nu < 0.5,
-                  ExcMessage("Saint Venant-Kirchhoff: needs E > 0 and "
-                             "-1 < nu < 0.5."));
-      mu     = E / (2. * (1. + nu));
-      lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
-    }
+      : CompressibleHyperelasticMaterial<SaintVenantKirchhoff>(
+          E,
+          nu,
+          "Saint Venant-Kirchhoff")
+    {}
 
 
 
@@ -570,30 +581,6 @@ namespace Common
         sum(scaled(identity<Number>(), lambda * trace(E)), scaled(E, 2. * mu));
       const Matrix<Number> t = product(product(F, S), transpose(F));
       std::copy(t.begin(), t.end(), tau);
-    }
-
-
-
-    bool
-    SaintVenantKirchhoff::has_volumetric_split() const
-    {
-      return false;
-    }
-
-
-
-    double
-    SaintVenantKirchhoff::shear_modulus() const
-    {
-      return mu;
-    }
-
-
-
-    double
-    SaintVenantKirchhoff::bulk_modulus() const
-    {
-      return lambda + 2. * mu / 3.;
     }
 
 
@@ -755,6 +742,8 @@ namespace Common
     template class HyperelasticMaterial<NeoHookean>;
     template class HyperelasticMaterial<NeoHookeanSplit>;
     template class HyperelasticMaterial<SaintVenantKirchhoff>;
+    template class CompressibleHyperelasticMaterial<NeoHookean>;
+    template class CompressibleHyperelasticMaterial<SaintVenantKirchhoff>;
 
 
 

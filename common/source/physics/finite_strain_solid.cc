@@ -193,6 +193,40 @@ namespace Common
 
 
 
+    void
+    check_element_technology(const ElementTechnology technology,
+                             const unsigned int      degree)
+    {
+      AssertThrow(technology != ElementTechnology::f_bar || degree == 1,
+                  ExcMessage("Solid: 'Element technology = F-bar' is a Q1 "
+                             "element; use element degree 1 or the mixed "
+                             "element."));
+      AssertThrow(technology != ElementTechnology::mixed || degree <= 2,
+                  ExcMessage("Solid: the mixed element is Q1-P0 or Q2-P1; "
+                             "use element degree 1 or 2."));
+    }
+
+
+
+    void
+    check_element_technology(const ElementTechnology                technology,
+                             const Materials::FiniteStrainMaterial &law,
+                             const std::string                     &body)
+    {
+      AssertThrow(technology == ElementTechnology::mixed ||
+                    !law.is_incompressible(),
+                  ExcMessage(body + ": Poisson's ratio 0.5 (exactly "
+                                    "incompressible) needs 'Element technology "
+                                    "= mixed' in subsection Solid."));
+      AssertThrow(technology != ElementTechnology::mixed ||
+                    law.has_volumetric_split(),
+                  ExcMessage(body + ": the mixed element needs a law with a "
+                                    "volumetric-isochoric split ('neo-Hookean "
+                                    "split' or 'J2 plasticity')."));
+    }
+
+
+
     template <int dim>
     FiniteStrainSolid<dim>::FiniteStrainSolid(
       const Mapping<dim>                                      &mapping,
@@ -211,30 +245,11 @@ namespace Common
     {
       AssertThrow(dim == 2 || kinematics == Kinematics::cartesian,
                   ExcMessage("Axisymmetric kinematics needs a 2D model."));
-      AssertThrow(parameters.technology != ElementTechnology::f_bar ||
-                    fe.degree == 1,
-                  ExcMessage("Finite strain: the F-bar element is a Q1 "
-                             "element; use Element degree = 1 (or the mixed "
-                             "element for Q2)."));
-      AssertThrow(parameters.technology != ElementTechnology::mixed ||
-                    fe.degree <= 2,
-                  ExcMessage("Finite strain: the mixed element is Q1-P0 or "
-                             "Q2-P1."));
+      check_element_technology(parameters.technology, fe.degree);
       for (const auto &[id, law] : materials)
-        {
-          AssertThrow(parameters.technology == ElementTechnology::mixed ||
-                        !law->is_incompressible(),
-                      ExcMessage("Material id " + std::to_string(id) +
-                                 " is exactly incompressible (Poisson's "
-                                 "ratio 0.5): it needs Element technology = "
-                                 "mixed."));
-          AssertThrow(parameters.technology != ElementTechnology::mixed ||
-                        law->has_volumetric_split(),
-                      ExcMessage("Material id " + std::to_string(id) +
-                                 ": the mixed element needs a law with a "
-                                 "volumetric-isochoric split (neo-Hookean "
-                                 "split or J2 plasticity)."));
-        }
+        check_element_technology(parameters.technology,
+                                 *law,
+                                 "Material id " + std::to_string(id));
     }
 
 

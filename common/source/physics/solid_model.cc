@@ -74,10 +74,7 @@ namespace Common
         }
 
       const auto technology = parameters.finite_strain_parameters.technology;
-      AssertThrow(technology != ElementTechnology::f_bar || fe.degree == 1,
-                  ExcMessage("Solid: 'Element technology = F-bar' is a Q1 "
-                             "element; use element degree 1 or the mixed "
-                             "element."));
+      check_element_technology(technology, fe.degree);
       std::map<types::material_id,
                std::shared_ptr<const Materials::FiniteStrainMaterial>>
         laws;
@@ -85,18 +82,7 @@ namespace Common
         {
           laws[id] =
             Materials::create_finite_strain_material(body.finite_strain);
-          AssertThrow(technology == ElementTechnology::mixed ||
-                        !laws[id]->is_incompressible(),
-                      ExcMessage(body.name +
-                                 ": Poisson's ratio 0.5 (exactly "
-                                 "incompressible) needs 'Element technology "
-                                 "= mixed' in subsection Solid."));
-          AssertThrow(technology != ElementTechnology::mixed ||
-                        laws[id]->has_volumetric_split(),
-                      ExcMessage(body.name +
-                                 ": the mixed element needs a law with a "
-                                 "volumetric-isochoric split ('neo-Hookean "
-                                 "split' or 'J2 plasticity')."));
+          check_element_technology(technology, *laws[id], body.name);
         }
       return std::make_unique<FiniteStrainSolid<dim>>(
         mapping,

@@ -190,33 +190,51 @@ namespace Common
     };
 
     /**
+     * @brief A hyperelastic law without a volumetric-isochoric split,
+     * given by the Lame constants of Young's modulus and Poisson's ratio.
+     */
+    template <class Law>
+    class CompressibleHyperelasticMaterial : public HyperelasticMaterial<Law>
+    {
+    public:
+      /** @brief From Young's modulus (MPa) and Poisson's ratio
+       * (-1 < nu < 0.5); @p name names the law in the error message. */
+      CompressibleHyperelasticMaterial(const double       youngs_modulus,
+                                       const double       poisson_ratio,
+                                       const std::string &name);
+
+      /** @brief False. */
+      bool
+      has_volumetric_split() const override;
+
+      /** @brief mu (MPa). */
+      double
+      shear_modulus() const override;
+
+      /** @brief lambda + 2 mu / 3 (MPa). */
+      double
+      bulk_modulus() const override;
+
+    protected:
+      double mu;
+      double lambda;
+    };
+
+    /**
      * @brief Compressible neo-Hookean law,
      * \f$\tau = \mu(b - I) + \lambda\ln J\,I\f$.
      */
-    class NeoHookean : public HyperelasticMaterial<NeoHookean>
+    class NeoHookean : public CompressibleHyperelasticMaterial<NeoHookean>
     {
     public:
       /** @brief From Young's modulus (MPa) and Poisson's ratio
        * (-1 < nu < 0.5). */
       NeoHookean(const double youngs_modulus, const double poisson_ratio);
 
-      bool
-      has_volumetric_split() const override;
-
-      double
-      shear_modulus() const override;
-
-      double
-      bulk_modulus() const override;
-
       /** @brief The stress for any number type. */
       template <typename Number>
       void
       stress(const Number *F, const StressPart part, Number *tau) const;
-
-    private:
-      double mu;
-      double lambda;
     };
 
     /**
@@ -263,30 +281,18 @@ namespace Common
      * is Hooke's law of the Green-Lagrange strain.
      */
     class SaintVenantKirchhoff
-      : public HyperelasticMaterial<SaintVenantKirchhoff>
+      : public CompressibleHyperelasticMaterial<SaintVenantKirchhoff>
     {
     public:
-      /** @brief From Young's modulus (MPa) and Poisson's ratio. */
+      /** @brief From Young's modulus (MPa) and Poisson's ratio
+       * (-1 < nu < 0.5). */
       SaintVenantKirchhoff(const double youngs_modulus,
                            const double poisson_ratio);
-
-      bool
-      has_volumetric_split() const override;
-
-      double
-      shear_modulus() const override;
-
-      double
-      bulk_modulus() const override;
 
       /** @brief The stress for any number type. */
       template <typename Number>
       void
       stress(const Number *F, const StressPart part, Number *tau) const;
-
-    private:
-      double mu;
-      double lambda;
     };
 
     /**

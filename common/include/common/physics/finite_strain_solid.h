@@ -43,6 +43,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace Common
@@ -81,6 +82,22 @@ namespace Common
       /** Most multiplier updates in one load step. */
       unsigned int max_augmentations = 30;
     };
+
+    /** @brief Check that @p technology exists for the element degree
+     * @p degree (F-bar: Q1; mixed: Q1 or Q2); a one-line error names the
+     * entry. */
+    void
+    check_element_technology(const ElementTechnology technology,
+                             const unsigned int      degree);
+
+    /** @brief Check that @p technology suits the law @p law of the body
+     * named @p body (an exactly incompressible law needs the mixed
+     * element, which needs a volumetric-isochoric split); a one-line
+     * error names the body. */
+    void
+    check_element_technology(const ElementTechnology                technology,
+                             const Materials::FiniteStrainMaterial &law,
+                             const std::string                     &body);
 
     /**
      * @brief Total Lagrangian finite-strain solid on a vector-valued FE_Q
