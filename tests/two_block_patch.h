@@ -14,6 +14,7 @@
 
 #include <common/contact/contact_geometry.h>
 #include <common/contact/contact_parameters.h>
+#include <common/contact/current_mortar_geometry.h>
 #include <common/contact/normal_enforcement.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/materials/linear_elastic.h>
@@ -325,14 +326,26 @@ namespace TwoBlockPatch
         materials,
         setting.kinematics);
 
-      contact_geometry =
-        std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
-          dof_handler,
-          mapping,
-          contact.secondary_boundary_id,
-          contact.primary_boundary_id,
-          contact.search_distance,
-          setting.kinematics == Common::Physics::Kinematics::axisymmetric);
+      const bool axisymmetric =
+        setting.kinematics == Common::Physics::Kinematics::axisymmetric;
+      if (current_configuration)
+        contact_geometry =
+          std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+            dof_handler,
+            mapping,
+            contact.secondary_boundary_id,
+            contact.primary_boundary_id,
+            contact.search_distance,
+            axisymmetric);
+      else
+        contact_geometry =
+          std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
+            dof_handler,
+            mapping,
+            contact.secondary_boundary_id,
+            contact.primary_boundary_id,
+            contact.search_distance,
+            axisymmetric);
       contact_problem =
         std::make_unique<Common::Problems::ContactNewtonProblem<dim>>(
           dof_handler,
@@ -437,8 +450,10 @@ namespace TwoBlockPatch
     Common::Contact::ContactParameters         contact;
     Common::Solvers::LinearSolverParameters    solver_parameters;
     Common::Solvers::NonlinearSolverParameters newton_parameters;
-    std::unique_ptr<Common::Contact::ReferenceMortarGeometry<dim>>
-      contact_geometry;
+    /** Contact in the current configuration (CurrentMortarGeometry)
+     * instead of the reference one; set before setup_problem(). */
+    bool current_configuration = false;
+    std::unique_ptr<Common::Contact::ContactGeometry<dim>> contact_geometry;
     std::unique_ptr<Common::Problems::ContactNewtonProblem<dim>>
       contact_problem;
   };

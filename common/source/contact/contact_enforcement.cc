@@ -105,6 +105,17 @@ namespace Common
 
     template <int dim>
     void
+    ContactEnforcement<dim>::update_geometry(
+      const std::vector<Tensor<1, dim>> &accepted_relative)
+    {
+      directions.update_normals(nodal_normals(coupling));
+      contact_state.rebase(accepted_relative);
+    }
+
+
+
+    template <int dim>
+    void
     ContactEnforcement<dim>::restore()
     {
       contact_state.restore();

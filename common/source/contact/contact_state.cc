@@ -337,6 +337,19 @@ namespace Common
       current = accepted;
     }
 
+
+
+    template <int dim>
+    void
+    ContactState<dim>::rebase(
+      const std::vector<Tensor<1, dim>> &accepted_relative_displacements)
+    {
+      AssertDimension(accepted_relative_displacements.size(), n_nodes());
+      for (unsigned int j = 0; j < n_nodes(); ++j)
+        if (partition.is_held(j))
+          accepted_relative[j] = accepted_relative_displacements[j];
+    }
+
     template class ContactState<2>;
     template class ContactState<3>;
   } // namespace Contact

@@ -457,6 +457,16 @@ namespace Common
       compute_nodal_normals();
     }
 
+    template <int dim>
+    void
+    ContactSurface<dim>::move_node(const unsigned int    n,
+                                   const Tensor<1, dim> &shift)
+    {
+      AssertIndexRange(n, nodes.size());
+      nodes[n].position += shift;
+      compute_nodal_normals();
+    }
+
     template class ContactSurface<2>;
     template class ContactSurface<3>;
     template void

@@ -53,6 +53,7 @@ namespace Common
       : normals(normals)
       , tangents(normals.size())
       , free_normally(normals.size(), true)
+      , fixed_components(normals.size())
     {
       for (unsigned int j = 0; j < normals.size(); ++j)
         tangents[j] = tangent_basis(normals[j]);
@@ -62,9 +63,23 @@ namespace Common
 
     template <int dim>
     void
+    FreeDirections<dim>::update_normals(
+      const std::vector<Tensor<1, dim>> &new_normals)
+    {
+      AssertDimension(new_normals.size(), size());
+      normals = new_normals;
+      for (unsigned int j = 0; j < size(); ++j)
+        fix_components(j, fixed_components[j]);
+    }
+
+
+
+    template <int dim>
+    void
     FreeDirections<dim>::fix_components(const unsigned int           j,
                                         const std::array<bool, dim> &fixed)
     {
+      fixed_components[j]     = fixed;
       const Tensor<1, dim> &n = normals[j];
       // The tangent directions w with w_d = 0 for every fixed d: the tangent
       // plane minus the span of the fixed unit vectors' tangential parts

@@ -378,22 +378,70 @@ namespace Common
       const bool                                      axisymmetric,
       const std::vector<bool>                        &integrated_rows)
     {
+      reinit(secondary_surface,
+             std::vector<RigidPartner<dim>>{
+               {&rigid, reference_node_dofs, Tensor<1, dim>()}},
+             search_distance,
+             axisymmetric,
+             integrated_rows);
+    }
+
+
+
+    // Rows against several rigid surfaces: each integration point pairs
+    // with the nearest surface its normal ray meets; row j gets one primary
+    // node per surface it meets (node j n_surfaces + i), at the
+    // dual-weighted mean of its partner points on surface i.
+    template <int dim>
+    void
+    MortarCoupling<dim>::reinit(const ContactSurface<dim> &secondary_surface,
+                                const std::vector<RigidPartner<dim>> &partners,
+                                const double             search_distance,
+                                const bool               axisymmetric,
+                                const std::vector<bool> &integrated_rows)
+    {
       AssertThrow(dim == 2 || !axisymmetric,
                   ExcMessage("Axisymmetric mortar coupling needs 2D "
                              "surfaces."));
+      AssertThrow(!partners.empty(),
+                  ExcMessage("Mortar coupling: no rigid surface."));
       const auto ring = [axisymmetric](const Point<dim> &x) {
         return axisymmetric ? 2. * numbers::PI * x[0] : 1.;
       };
       secondary = &secondary_surface;
       primary   = nullptr;
 
-      const unsigned int n_nodes = secondary->n_nodes();
+      const unsigned int n_nodes    = secondary->n_nodes();
+      const unsigned int n_surfaces = partners.size();
       rows.assign(n_nodes, MortarRow<dim>());
       dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
-      std::vector<double>         mass(n_nodes, 0.);
-      std::vector<Tensor<1, dim>> moment(n_nodes);
+      std::vector<double>         mass(n_nodes * n_surfaces, 0.);
+      std::vector<Tensor<1, dim>> moment(n_nodes * n_surfaces);
       const std::vector<bool>     paired_faces = select_faces(integrated_rows);
       std::vector<bool>           node_covered(integrated);
+
+      // The nearest hit of the ray x + t n on any surface (facing it, if
+      // @p facing).
+      const auto nearest_hit = [&](const Point<dim>     &x,
+                                   const Tensor<1, dim> &n,
+                                   const double          length_scale,
+                                   const bool            facing) {
+        std::pair<unsigned int, typename RigidSurface<dim>::RayHit> best{
+          numbers::invalid_unsigned_int,
+          {}};
+        for (unsigned int i = 0; i < n_surfaces; ++i)
+          {
+            const auto hit = partners[i].surface->intersect_ray(x,
+                                                                n,
+                                                                search_distance,
+                                                                length_scale);
+            if (hit.found && (!facing || hit.normal * n < 0.) &&
+                (best.first == numbers::invalid_unsigned_int ||
+                 std::abs(hit.t) < std::abs(best.second.t)))
+              best = {i, hit};
+          }
+        return best;
+      };
 
       const unsigned int       degree = secondary->base_element().degree;
       const QGauss<dim - 1>    face_quadrature(degree + 3);
@@ -430,8 +478,8 @@ namespace Common
                   n += N[a] * secondary->node(face.nodes[a]).normal;
                 }
               n /= n.norm();
-              const auto hit = rigid.intersect_ray(x, n, search_distance, size);
-              if (!hit.found || hit.normal * n >= 0.)
+              const auto [i, hit] = nearest_hit(x, n, size, true);
+              if (i == numbers::invalid_unsigned_int)
                 {
                   covered = false;
                   continue;
@@ -443,8 +491,9 @@ namespace Common
                   double psi = 0.;
                   for (unsigned int b = 0; b < n_shape; ++b)
                     psi += A(a, b) * N[b];
-                  mass[face.nodes[a]] += psi * JxW;
-                  moment[face.nodes[a]] += psi * JxW * hit.point;
+                  const unsigned int k = face.nodes[a] * n_surfaces + i;
+                  mass[k] += psi * JxW;
+                  moment[k] += psi * JxW * hit.point;
                 }
             }
           if (!covered)
@@ -455,7 +504,7 @@ namespace Common
       double largest_weight = 0.;
       for (const auto &row : rows)
         largest_weight = std::max(largest_weight, row.weight);
-      primary_nodes.assign(n_nodes, {Point<dim>(), reference_node_dofs});
+      primary_nodes.resize(n_nodes * n_surfaces);
       for (unsigned int j = 0; j < n_nodes; ++j)
         {
           const SurfaceNode<dim> &node = secondary->node(j);
@@ -463,27 +512,42 @@ namespace Common
           row.normal                   = node.normal;
           if (row.weight <= 1e-10 * largest_weight)
             row.weight = 0.;
-          row.has_partner = node_covered[j] && row.weight > 0. && mass[j] > 0.;
-          // The rigid surface covers the node's faces: sum_k M_jk = D_j
-          // holds by definition of the single partner node.
-          primary_nodes[j].reference_position =
-            mass[j] > 0. ? Point<dim>(moment[j] / mass[j]) :
-                           node.reference_position;
+          double total_mass = 0.;
+          for (unsigned int i = 0; i < n_surfaces; ++i)
+            total_mass += mass[j * n_surfaces + i];
+          row.has_partner =
+            node_covered[j] && row.weight > 0. && total_mass > 0.;
+          // A partner node stores its point less the displacement of the
+          // surface's reference node, so that reference position plus
+          // displacement is where it is now.
+          Tensor<1, dim> gap;
+          for (unsigned int i = 0; i < n_surfaces; ++i)
+            {
+              const unsigned int k = j * n_surfaces + i;
+              primary_nodes[k] = {node.reference_position, partners[i].dofs};
+              if (mass[k] == 0. || !row.has_partner)
+                continue;
+              primary_nodes[k].reference_position =
+                Point<dim>(moment[k] / mass[k] - partners[i].displacement);
+              // The surfaces cover the node's faces: sum_k M_jk = D_j
+              // holds by definition of the partner nodes.
+              const double M = n_surfaces == 1 ?
+                                 row.weight :
+                                 row.weight * mass[k] / total_mass;
+              if (std::abs(M) <= 1e-14 * row.weight)
+                continue;
+              row.primary_weights.emplace_back(k, M);
+              gap += M * (primary_nodes[k].reference_position -
+                          node.reference_position);
+            }
           if (row.has_partner)
             {
-              row.primary_weights = {{j, row.weight}};
-              const auto hit      = rigid.intersect_ray(node.position,
-                                                   node.normal,
-                                                   search_distance,
-                                                   row.mesh_size);
-              if (hit.found)
+              const auto [i, hit] =
+                nearest_hit(node.position, node.normal, row.mesh_size, false);
+              if (i != numbers::invalid_unsigned_int)
                 row.nodal_gap = hit.t;
             }
-          row.reference_weighted_gap =
-            row.has_partner ?
-              row.normal * (row.weight * (primary_nodes[j].reference_position -
-                                          node.reference_position)) :
-              0.;
+          row.reference_weighted_gap = row.has_partner ? row.normal * gap : 0.;
         }
     }
 

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -141,6 +142,7 @@ namespace Common
                                     const ProfileSweep  sweep)
       : profile(profile)
       , sweep(sweep)
+      , placement_rotation(Tensor<2, dim>(unit_symmetric_tensor<dim>()))
     {
       AssertThrow(profile.n_pieces() > 0,
                   ExcMessage("Rigid surface: the profile is empty."));
@@ -149,8 +151,74 @@ namespace Common
 
 
     template <int dim>
+    void
+    RigidSurface<dim>::set_placement(const Tensor<1, dim> &translation,
+                                     const double          angle,
+                                     const Point<dim>     &centre)
+    {
+      placement_translation    = translation;
+      placement_centre         = centre;
+      placement_rotation       = Tensor<2, dim>(unit_symmetric_tensor<dim>());
+      placement_rotation[0][0] = std::cos(angle);
+      placement_rotation[0][1] = -std::sin(angle);
+      placement_rotation[1][0] = std::sin(angle);
+      placement_rotation[1][1] = std::cos(angle);
+      placed                   = translation.norm() > 0. || angle != 0.;
+    }
+
+
+
+    template <int dim>
+    Point<dim>
+    RigidSurface<dim>::to_body(const Point<dim> &x) const
+    {
+      if (!placed)
+        return x;
+      return placement_centre +
+             transpose(placement_rotation) *
+               (x - placement_centre - placement_translation);
+    }
+
+
+
+    template <int dim>
+    Point<dim>
+    RigidSurface<dim>::from_body(const Point<dim> &y) const
+    {
+      if (!placed)
+        return y;
+      return placement_centre + placement_translation +
+             placement_rotation * (y - placement_centre);
+    }
+
+
+
+    template <int dim>
+    const Tensor<2, dim> &
+    RigidSurface<dim>::rotation() const
+    {
+      return placement_rotation;
+    }
+
+
+
+    template <int dim>
     typename RigidSurface<dim>::ClosestPoint
     RigidSurface<dim>::closest_point(const Point<dim> &x) const
+    {
+      if (!placed)
+        return closest_point_in_body(x);
+      ClosestPoint result = closest_point_in_body(to_body(x));
+      result.point        = from_body(result.point);
+      result.normal       = placement_rotation * result.normal;
+      return result;
+    }
+
+
+
+    template <int dim>
+    typename RigidSurface<dim>::ClosestPoint
+    RigidSurface<dim>::closest_point_in_body(const Point<dim> &x) const
     {
       ClosestPoint result;
       if constexpr (dim == 2)

@@ -202,6 +202,12 @@ namespace Common
       // stiffness: the DoFs of every cell around the node, closed below
       // over the hanging-node parents.
       relevant.add_indices(friction_cell_dofs);
+      // A geometry in the current configuration reads the displacement of
+      // both surfaces when it pairs them again.
+      {
+        const auto dofs = geometry.dofs_read_by_update();
+        relevant.add_indices(dofs.begin(), dofs.end());
+      }
       relevant = with_constraint_targets(relevant, base_constraints);
       relevant.compress();
 
@@ -232,6 +238,36 @@ namespace Common
       residual_vector.reinit(locally_owned_dofs,
                              locally_relevant_dofs,
                              mpi_communicator);
+      if (geometry.is_current_configuration())
+        accepted_ghosted.reinit(locally_owned_dofs,
+                                locally_relevant_dofs,
+                                mpi_communicator);
+    }
+
+
+
+    // In the current configuration the rows follow every new iterate: the
+    // geometry pairs and integrates them again, the sparsity pattern grows
+    // when a row meets a new primary node, and the friction history is
+    // measured with the new rows.
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::update_geometry()
+    {
+      if (!geometry.is_current_configuration())
+        return;
+      const auto start = std::chrono::steady_clock::now();
+      if (geometry.update(solution))
+        {
+          // The direct solver refers to the matrix it factorised.
+          linear_solver.reset();
+          setup_stored_dofs(*base_constraints);
+          setup_matrices();
+        }
+      accepted_ghosted = accepted_solution;
+      contact_enforcement->update_geometry(
+        geometry.accepted_relative_displacements(accepted_ghosted));
+      solve_times.geometry_update += IO::seconds_since(start);
     }
 
 
@@ -255,6 +291,10 @@ namespace Common
         constraints_dirichlet_and_hanging_nodes,
         friction_cells,
         dsp);
+      // The geometric stiffness of contact in the current configuration.
+      for (const auto &group : geometry.coupled_dof_groups())
+        constraints_dirichlet_and_hanging_nodes
+          .add_entries_local_to_global(group, dsp, false);
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  locally_owned_dofs,
                                                  mpi_communicator,
@@ -305,11 +345,6 @@ namespace Common
       const double              linear_tolerance)
     {
       const auto start = std::chrono::steady_clock::now();
-      if (geometry.update(solution))
-        {
-          setup_stored_dofs(*base_constraints);
-          setup_matrices();
-        }
       if (contact_enforcement->has_friction())
         {
           assemble_bulk_matrix();
@@ -346,6 +381,7 @@ namespace Common
                                      system_matrix,
                                      system_rhs);
       load.add(state, constraints, system_rhs);
+      add_geometric_contact_stiffness();
       if (contact_parameters.enforcement == Contact::Enforcement::penalty)
         contact_enforcement->assemble_penalty(constraints,
                                               solution,
@@ -382,10 +418,57 @@ namespace Common
       solution = solution_owned;
       // A nonlinear solid's tangent belongs to the new state.
       bulk_matrix_current = bulk_matrix_current && solid_operator.is_linear();
+      update_geometry();
       const double update_norm  = newton_update.l2_norm();
       const double current_norm = solution_owned.l2_norm();
       return current_norm > 0. ? update_norm / current_norm :
                                  (update_norm > 0. ? 1. : 0.);
+    }
+
+
+
+    // The contact forces of the current tractions change with the rows in
+    // the current configuration: minus their derivative joins the tangent,
+    // distributed through the constraints of the iteration (its inhomogeneous
+    // columns move to the right-hand side).
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::add_geometric_contact_stiffness()
+    {
+      if (!geometry.is_current_configuration())
+        return;
+      const auto                 &coupling = geometry.coupling();
+      const auto                 &rows     = contact_enforcement->rows();
+      std::vector<Tensor<1, dim>> tractions(coupling.n_rows());
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        if (rows.is_owned(j) && contact_enforcement->is_active(j))
+          tractions[j] =
+            -contact_enforcement->pressure(j) * coupling.row(j).normal +
+            contact_enforcement->tangential_traction(j);
+      FullMatrix<double>                   cell_matrix;
+      Vector<double>                       cell_rhs;
+      std::vector<types::global_dof_index> dofs;
+      geometry.contact_force_derivative(
+        tractions,
+        [&](const std::vector<types::global_dof_index> &row_dofs,
+            const types::global_dof_index               column,
+            const std::vector<double>                  &values) {
+          dofs = row_dofs;
+          auto position =
+            std::find(dofs.begin(), dofs.end(), column) - dofs.begin();
+          if (position == static_cast<long>(dofs.size()))
+            dofs.push_back(column);
+          cell_matrix.reinit(dofs.size(), dofs.size());
+          cell_rhs.reinit(dofs.size());
+          for (unsigned int i = 0; i < row_dofs.size(); ++i)
+            cell_matrix(i, position) = values[i];
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_rhs,
+                                                 dofs,
+                                                 system_matrix,
+                                                 system_rhs,
+                                                 true);
+        });
     }
 
 
@@ -457,6 +540,8 @@ namespace Common
     {
       const auto   start     = std::chrono::steady_clock::now();
       const double cpu_start = IO::process_cpu_seconds();
+      geometry.set_load_state(state);
+      update_geometry();
       contact_enforcement->begin_step();
       Solvers::NewtonCallbacks callbacks;
       callbacks.assemble_solve_and_update = [&](const double tolerance) {
@@ -526,6 +611,7 @@ namespace Common
     {
       accepted_solution = solution_owned;
       solid_operator.commit(dof_handler, solution);
+      geometry.commit();
       contact_enforcement->commit(solution);
     }
 
@@ -563,6 +649,7 @@ namespace Common
           times.push_back(IO::process_cpu_seconds() - start);
           solution_owned = converged;
           solution       = solution_owned;
+          update_geometry();
         }
       solve_times = kept;
       std::nth_element(times.begin(),

@@ -164,6 +164,18 @@ namespace Common
       void
       restore();
 
+      /**
+       * @brief Follow mortar rows that were integrated again (current
+       * configuration): take the nodes' new normals into their free
+       * directions and measure the friction history from
+       * @p accepted_relative, the relative displacement of the last
+       * accepted state with the new rows
+       * (ContactGeometry::accepted_relative_displacements()).
+       */
+      void
+      update_geometry(
+        const std::vector<dealii::Tensor<1, dim>> &accepted_relative);
+
       /** @brief Forget the active-set history used to detect cycling; call
        * at the start of each load step. */
       void

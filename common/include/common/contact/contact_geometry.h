@@ -15,6 +15,7 @@
 #include <common/contact/contact_surface.h>
 #include <common/contact/mortar_coupling.h>
 #include <common/contact/rigid_surface.h>
+#include <common/solvers/load_program.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
@@ -80,6 +81,98 @@ namespace Common
        * console and summary.json. */
       virtual std::string
       primary_description() const = 0;
+
+      /** @brief True if the rows follow the configuration (update() then
+       * integrates them again for every displacement); false in the
+       * reference configuration. */
+      virtual bool
+      is_current_configuration() const
+      {
+        return false;
+      }
+
+      /** @brief Move what the load program prescribes (a tool's rotation)
+       * to @p state; called at the start of every load step, before
+       * update(). Nothing by default. */
+      virtual void
+      set_load_state(const Solvers::LoadState &state)
+      {
+        (void)state;
+      }
+
+      /** @brief Keep the prescribed motion of the current load step as that
+       * of the last accepted one. Nothing by default. */
+      virtual void
+      commit()
+      {}
+
+      /**
+       * @brief The relative displacement of every integrated row at the
+       * last accepted state @p u_accepted (ghosted), measured with the
+       * current rows: the origin from which slip is measured
+       * (ContactState::rebase()). By default
+       * MortarCoupling::relative_displacement() of each row; a geometry
+       * with a turning tool adds the tool's rotation since that state.
+       */
+      virtual std::vector<dealii::Tensor<1, dim>>
+      accepted_relative_displacements(const VectorType &u_accepted) const
+      {
+        const auto                         &rows = coupling();
+        std::vector<dealii::Tensor<1, dim>> result(rows.n_rows());
+        for (unsigned int j = 0; j < rows.n_rows(); ++j)
+          if (rows.is_integrated(j))
+            result[j] = rows.relative_displacement(j, u_accepted);
+        return result;
+      }
+
+      /** @brief Receives one column of a matrix: the row DoFs, the column
+       * DoF and the values. */
+      using ColumnSink = std::function<
+        void(const std::vector<dealii::types::global_dof_index> &rows,
+             const dealii::types::global_dof_index               column,
+             const std::vector<double>                          &values)>;
+
+      /**
+       * @brief The derivative of the contact forces with respect to the
+       * displacement at fixed nodal tractions: the geometric stiffness of
+       * contact, which the Newton tangent needs when the rows follow the
+       * configuration. The forces are those of
+       * add_traction_forces(): \f$D_j\tau_j\f$ on secondary node j and
+       * \f$-M_{jk}\tau_j\f$ on its primary nodes, with the traction
+       * \f$\tau_j = -\lambda_j n_j + t_j\f$ whose pressure and
+       * tangential magnitude are held while n_j turns with the rows.
+       * Nothing by default: in the reference configuration the forces do
+       * not depend on the displacement.
+       * @param[in] tractions \f$\tau_j\f$ of every row (MPa), zero for
+       * an open node or a row this rank does not own.
+       * @param[in] add Receives every column of the derivative (N/mm).
+       */
+      virtual void
+      contact_force_derivative(
+        const std::vector<dealii::Tensor<1, dim>> &tractions,
+        const ColumnSink                          &add) const
+      {
+        (void)tractions;
+        (void)add;
+      }
+
+      /** @brief Groups of DoFs that the geometric stiffness of
+       * contact_force_derivative() couples, each to be coupled all with
+       * all in the sparsity pattern; none by default. */
+      virtual std::vector<std::vector<dealii::types::global_dof_index>>
+      coupled_dof_groups() const
+      {
+        return {};
+      }
+
+      /** @brief DoFs that update() reads beyond those of the rows (the
+       * nodes of both surfaces in the current configuration), which a
+       * rank must store; none by default. */
+      virtual std::vector<dealii::types::global_dof_index>
+      dofs_read_by_update() const
+      {
+        return {};
+      }
     };
 
 

@@ -212,6 +212,19 @@ namespace Common
       void
       restore();
 
+      /**
+       * @brief Measure the friction history with new mortar rows (current
+       * configuration): node j's relative displacement at the last
+       * accepted load step becomes @p accepted_relative[j], the relative
+       * displacement of the accepted configuration evaluated with the rows
+       * of the current one, so that slip increments are differences of
+       * one set of rows and a rigid motion of the pair is no slip
+       * (ContactGeometry::accepted_relative_displacement()). Entries of
+       * rows this rank does not hold are ignored.
+       */
+      void
+      rebase(const std::vector<dealii::Tensor<1, dim>> &accepted_relative);
+
     private:
       const FreeDirections<dim>          &free_directions;
       RowPartition                        partition;

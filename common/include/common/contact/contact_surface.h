@@ -157,6 +157,13 @@ namespace Common
       update_positions(const VectorType &displacement);
 
       /**
+       * @brief Move node @p n by @p shift (mm) and recompute the nodal
+       * normals (for difference quotients of the geometry).
+       */
+      void
+      move_node(const unsigned int n, const dealii::Tensor<1, dim> &shift);
+
+      /**
        * @brief Take the symmetry planes of a model cut by them into the
        * nodal normals. A node whose displacement component c is held at
        * zero by a line of @p constraints without entries, while another

@@ -76,6 +76,14 @@ namespace Common
         const ContactSurface<dim>               &surface,
         const dealii::AffineConstraints<double> &constraints);
 
+      /**
+       * @brief Give the nodes new normals (the contact geometry moved, in
+       * the current configuration) and recompute their free tangents and
+       * normal freedom with the components fixed so far.
+       */
+      void
+      update_normals(const std::vector<dealii::Tensor<1, dim>> &normals);
+
       /** @brief Number of nodes. */
       unsigned int
       size() const;
@@ -106,6 +114,8 @@ namespace Common
       std::vector<dealii::Tensor<1, dim>>              normals;
       std::vector<std::vector<dealii::Tensor<1, dim>>> tangents;
       std::vector<bool>                                free_normally;
+      /** The components fix_components() fixed, by node. */
+      std::vector<std::array<bool, dim>> fixed_components;
     };
   } // namespace Contact
 } // namespace Common

@@ -79,6 +79,24 @@ namespace Common
     };
 
     /**
+     * @brief An analytic rigid surface as the primary side of mortar rows:
+     * the surface (placed where it is now) and the reference node whose
+     * DoFs carry its translation.
+     */
+    template <int dim>
+    struct RigidPartner
+    {
+      /** The surface, placed in its current position. */
+      const RigidSurface<dim> *surface = nullptr;
+      /** DoFs of the reference node, one per component. */
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      /** Current displacement of the reference node (mm): a partner point
+       * x is stored as x less this, so that stored position plus
+       * displacement is x. Zero in the reference configuration. */
+      dealii::Tensor<1, dim> displacement;
+    };
+
+    /**
      * @brief Mortar operators D (diagonal) and M between two surfaces.
      */
     template <int dim>
@@ -144,6 +162,25 @@ namespace Common
              const double             search_distance,
              const bool               axisymmetric    = false,
              const std::vector<bool> &integrated_rows = {});
+
+      /**
+       * @brief Integrate D and the mortar rows against several analytic
+       * rigid surfaces (the tools of a forming scene), each moving with its
+       * own reference node. Each integration point pairs with the nearest
+       * surface that the ray along the secondary normal meets (facing it);
+       * row j gets one primary node per surface i it meets, numbered
+       * j n + i for n surfaces, at the dual-weighted mean of its partner
+       * points there, with \f$M_{ji}\f$ the share of \f$D_j\f$ that
+       * surface i covers. With one surface this is the reinit() above.
+       * @param[in] partners The surfaces and their reference nodes.
+       * Other parameters as for the meshed reinit().
+       */
+      void
+      reinit(const ContactSurface<dim>            &secondary,
+             const std::vector<RigidPartner<dim>> &partners,
+             const double                          search_distance,
+             const bool                            axisymmetric    = false,
+             const std::vector<bool>              &integrated_rows = {});
 
       /**
        * @brief The rows to integrate so that the rows marked in @p needed

@@ -11,6 +11,11 @@
  * The rigid body lies to the left of the profile as it is traversed; its
  * outward normal points to the right: \f$n = (t_y, -t_x)\f$ for the unit
  * tangent t.
+ *
+ * A surface can be placed by a rigid motion (set_placement()): a
+ * translation and a rotation about the z axis through a centre, so that a
+ * tool moves and turns without a mesh (a roller, a punch). Every query
+ * answers for the placed surface.
  */
 #ifndef common_contact_rigid_surface_h
 #define common_contact_rigid_surface_h
@@ -144,9 +149,46 @@ namespace Common
       std::string
       description() const;
 
+      /**
+       * @brief Place the surface by a rigid motion: a point Y of the
+       * surface as it was defined moves to
+       * \f$c + s + R(\theta)(Y - c)\f$, with R the rotation by
+       * @p angle (radians, counterclockwise seen from +z) about the z axis
+       * through the centre c (in 3D the axis parallel to z through c).
+       * @param[in] translation s (mm).
+       * @param[in] angle theta (rad).
+       * @param[in] centre c, in the surface's own coordinates (mm).
+       */
+      void
+      set_placement(const dealii::Tensor<1, dim> &translation,
+                    const double                  angle,
+                    const dealii::Point<dim>     &centre);
+
+      /** @brief The point of the surface as it was defined that the
+       * placement carries to @p x (the inverse of the rigid motion). */
+      dealii::Point<dim>
+      to_body(const dealii::Point<dim> &x) const;
+
+      /** @brief Where the placement carries the point @p y of the surface
+       * as it was defined. */
+      dealii::Point<dim>
+      from_body(const dealii::Point<dim> &y) const;
+
+      /** @brief The rotation R(theta) of the placement. */
+      const dealii::Tensor<2, dim> &
+      rotation() const;
+
     private:
-      const RigidProfile profile;
-      const ProfileSweep sweep;
+      const RigidProfile     profile;
+      const ProfileSweep     sweep;
+      dealii::Tensor<1, dim> placement_translation;
+      dealii::Tensor<2, dim> placement_rotation;
+      dealii::Point<dim>     placement_centre;
+      bool                   placed = false;
+
+      /** closest_point() of the surface as it was defined. */
+      ClosestPoint
+      closest_point_in_body(const dealii::Point<dim> &y) const;
 
       /** closest_point() of a swept profile (dim = 3). */
       void

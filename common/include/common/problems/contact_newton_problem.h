@@ -74,6 +74,9 @@ namespace Common
       double linear_solve      = 0.;
       double residual          = 0.;
       double active_set_update = 0.;
+      /** Pairing and integrating the rows again in the current
+       * configuration (within the Newton solves). */
+      double geometry_update = 0.;
       /** Processor time of contact set-up and Newton solves. */
       double contact_cpu = 0.;
     };
@@ -234,6 +237,20 @@ namespace Common
       setup_stored_dofs(
         const dealii::AffineConstraints<double> &base_constraints);
 
+      /** Current configuration: bring the contact geometry to the current
+       * displacement, rebuild the pattern if the coupling grew, and
+       * measure the friction history with the new rows. Nothing in the
+       * reference configuration. */
+      void
+      update_geometry();
+
+      /** Current configuration with Lagrange multipliers: add the
+       * geometric stiffness of contact at the nodal tractions of the last
+       * residual evaluation (ContactGeometry::contact_force_derivative())
+       * to the system. */
+      void
+      add_geometric_contact_stiffness();
+
       /** Build the sparsity pattern and the matrices for the current
        * coupling. */
       void
@@ -295,9 +312,12 @@ namespace Common
       dealii::TrilinosWrappers::MPI::Vector  solution;
       dealii::TrilinosWrappers::MPI::Vector  solution_owned;
       dealii::TrilinosWrappers::MPI::Vector  accepted_solution;
-      dealii::TrilinosWrappers::MPI::Vector  newton_update;
-      dealii::TrilinosWrappers::MPI::Vector  system_rhs;
-      dealii::TrilinosWrappers::MPI::Vector  residual_vector;
+      /** accepted_solution, readable where solution is (current
+       * configuration only). */
+      dealii::TrilinosWrappers::MPI::Vector accepted_ghosted;
+      dealii::TrilinosWrappers::MPI::Vector newton_update;
+      dealii::TrilinosWrappers::MPI::Vector system_rhs;
+      dealii::TrilinosWrappers::MPI::Vector residual_vector;
       // Declared after the matrix: Amesos refers to it when destroyed.
       Solvers::LinearSolver linear_solver;
 

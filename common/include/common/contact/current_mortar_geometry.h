@@ -1,0 +1,260 @@
+/**
+ * @file current_mortar_geometry.h
+ * Mortar rows in the current configuration, for finite strain and large
+ * sliding: the contact surfaces follow the displacement, and the pairing,
+ * the segmentation, D, M and the nodal normals are evaluated again for
+ * every Newton iterate. The primary side is a meshed surface or a set of
+ * analytic rigid tools (lines, arcs and their compositions in 2D;
+ * cylinders, planes and die profiles extruded along z or revolved about y
+ * in 3D), each translated with a reference node's DoFs (free or
+ * prescribed) and turned by a rotation the load program prescribes.
+ *
+ * Linearisation. The rows are held fixed within a Newton iteration: the
+ * weighted gap \f$\tilde g_j = n_j\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$ is
+ * exact at every iterate (the rows are integrated where the surfaces are),
+ * and its increment is taken as \f$n_j\cdot(\sum_k M_{jk}\Delta u_k - D_j
+ * \Delta u_j)\f$. The terms dropped are the derivatives of n_j, M and D:
+ * \f$\delta n_j\f$ multiplies \f$\int\psi_j g\,n\f$, which vanishes with
+ * the gap, and \f$\delta M\f$, \f$\delta D\f$ move partner points along
+ * the primary surface, which changes the gap only where the two normals
+ * differ. Both vanish at a converged closed node of a flat contact, where
+ * the iteration keeps the quadratic rate of the semismooth Newton method;
+ * on curved surfaces the dropped curvature term (pressure over radius) makes
+ * the rate linear with a small factor (measured in
+ * tests/common/current_contact_*).
+ *
+ * Slip is measured objectively (after A. Popp et al., IJNME 83 (2010)
+ * 1428-1465 and M. Gitterle et al., IJNME 84 (2010) 543-571): the
+ * increment since the last accepted step is
+ * \f$(\sum_k M_{jk}\Delta x_k - D_j\Delta x_j)/D_j\f$ with the current
+ * rows and the displacements of material points since that step, of the
+ * tool's material points for a rigid tool (translation and rotation). A
+ * rigid motion of the pair is no slip. The history lives on the secondary
+ * nodes (ContactState) and is committed only with an accepted step.
+ */
+#ifndef common_contact_current_mortar_geometry_h
+#define common_contact_current_mortar_geometry_h
+
+#include <common/contact/contact_geometry.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Common
+{
+  namespace Contact
+  {
+    /**
+     * @brief An analytic rigid tool: a rigid surface that translates with a
+     * reference node and turns by a prescribed angle about the z axis
+     * through a centre that moves with it.
+     */
+    template <int dim>
+    struct RigidTool
+    {
+      /** Name, for the console and the outputs ("punch", "die"). */
+      std::string name;
+      /** The surface in the tool's initial position. */
+      std::shared_ptr<const RigidSurface<dim>> surface;
+      /** DoFs of the reference node, one per component: their displacement
+       * is the tool's translation (prescribed by Dirichlet constraints or
+       * free under a load). */
+      std::array<dealii::types::global_dof_index, dim> reference_node_dofs;
+      /** Centre of rotation in the initial position (mm). */
+      dealii::Point<dim> centre;
+      /** The tool's rotation angle about the z axis through the centre at a
+       * load state (rad, counterclockwise seen from +z); none if empty. */
+      std::function<double(const Solvers::LoadState &)> rotation;
+    };
+
+
+
+    /**
+     * @brief Mortar rows integrated again for every displacement, between
+     * a secondary surface and a meshed primary surface or a set of rigid
+     * tools.
+     */
+    template <int dim>
+    class CurrentMortarGeometry : public ContactGeometry<dim>
+    {
+    public:
+      using typename ContactGeometry<dim>::VectorType;
+      using typename ContactGeometry<dim>::RowSelector;
+
+      /**
+       * @brief Secondary and primary surfaces are boundaries of the mesh.
+       * @param[in] search_distance Points with |gap| above this are not
+       * paired (mm).
+       * @param[in] axisymmetric Integrals carry the ring measure 2 pi x.
+       * The DoF handler and mapping must outlive this object.
+       */
+      CurrentMortarGeometry(const dealii::DoFHandler<dim>   &dof_handler,
+                            const dealii::Mapping<dim>      &mapping,
+                            const dealii::types::boundary_id secondary_id,
+                            const dealii::types::boundary_id primary_id,
+                            const double                     search_distance,
+                            const bool                       axisymmetric);
+
+      /**
+       * @brief The primary side is the set of rigid @p tools (at least
+       * one). Each integration point pairs with the nearest tool its
+       * normal ray meets.
+       */
+      CurrentMortarGeometry(const dealii::DoFHandler<dim>     &dof_handler,
+                            const dealii::Mapping<dim>        &mapping,
+                            const dealii::types::boundary_id   secondary_id,
+                            const std::vector<RigidTool<dim>> &tools,
+                            const double                       search_distance,
+                            const bool                         axisymmetric);
+
+      void
+      reinit(const dealii::AffineConstraints<double> &constraints,
+             const RowSelector &needed_rows = RowSelector()) override;
+
+      /**
+       * @brief Move the surfaces (and tools) to the displacement @p u and
+       * integrate the rows there.
+       * @return True if a row now couples to a primary node that the
+       * sparsity pattern built after the last true return (or reinit())
+       * does not hold.
+       */
+      bool
+      update(const VectorType &u) override;
+
+      const MortarCoupling<dim> &
+      coupling() const override;
+
+      std::string
+      primary_description() const override;
+
+      /** @brief True. */
+      bool
+      is_current_configuration() const override;
+
+      /** @brief The tools' rotations at @p state. */
+      void
+      set_load_state(const Solvers::LoadState &state) override;
+
+      /** @brief Keep the tools' rotations as the accepted ones. */
+      void
+      commit() override;
+
+      /** @brief MortarCoupling::relative_displacement() at @p u_accepted,
+       * less, for a row paired with a tool, the displacement of the tool's
+       * partner points by the tool's rotation since the accepted state. */
+      std::vector<dealii::Tensor<1, dim>>
+      accepted_relative_displacements(
+        const VectorType &u_accepted) const override;
+
+      using typename ContactGeometry<dim>::ColumnSink;
+
+      /**
+       * @brief The geometric stiffness of contact by difference quotients:
+       * each node of a face around a loaded row, each primary node of such
+       * a row and each tool's reference node is moved by 1e-7 of the mesh
+       * size along each axis, the rows that depend on it are integrated
+       * again, and the change of their forces is a column. The columns
+       * are restricted to the DoFs the rows couple (those of the sparsity
+       * pattern); the error of the quotients (about 1e-7) changes the
+       * tangent only, never the converged state.
+       */
+      void
+      contact_force_derivative(
+        const std::vector<dealii::Tensor<1, dim>> &tractions,
+        const ColumnSink                          &add) const override;
+
+      /** @brief For each paired row: the DoFs of the secondary nodes within
+       * two faces of it and of their primary nodes. */
+      std::vector<std::vector<dealii::types::global_dof_index>>
+      coupled_dof_groups() const override;
+
+      /** @brief The DoFs of the nodes of both surfaces and of the tools'
+       * reference nodes. */
+      std::vector<dealii::types::global_dof_index>
+      dofs_read_by_update() const override;
+
+      /** @brief Number of rigid tools (0 for a meshed primary surface). */
+      unsigned int
+      n_tools() const;
+
+      /** @brief Tool @p i. */
+      const RigidTool<dim> &
+      tool(const unsigned int i) const;
+
+      /** @brief The rigid tool that primary node @p k of the coupling
+       * belongs to. */
+      unsigned int
+      tool_of_primary_node(const unsigned int k) const;
+
+      /** @brief The surface of tool @p i where it is now. */
+      const RigidSurface<dim> &
+      placed_surface(const unsigned int i) const;
+
+      /** @brief Rotation angle of tool @p i now (rad). */
+      double
+      tool_angle(const unsigned int i) const;
+
+      /** @brief Number of times update() found a changed coupling
+       * pattern. */
+      unsigned int
+      n_pattern_changes() const;
+
+    private:
+      const dealii::DoFHandler<dim>                  &dof_handler;
+      const dealii::Mapping<dim>                     &mapping;
+      const dealii::types::boundary_id                secondary_id;
+      const dealii::types::boundary_id                primary_id;
+      const std::vector<RigidTool<dim>>               tools;
+      const double                                    search_distance;
+      const bool                                      axisymmetric;
+      const dealii::AffineConstraints<double>        *constraints = nullptr;
+      std::vector<bool>                               integrated_rows;
+      std::vector<std::unique_ptr<RigidSurface<dim>>> placed;
+      std::vector<double>                             angle;
+      std::vector<double>                             accepted_angle;
+      /** The tools as last placed by integrate(). */
+      std::vector<RigidPartner<dim>> partners;
+      /** The faces of the secondary surface around each of its nodes. */
+      std::vector<std::vector<unsigned int>> node_faces;
+
+      std::unique_ptr<ContactSurface<dim>> secondary;
+      std::unique_ptr<ContactSurface<dim>> primary;
+      std::unique_ptr<ContactSearch<dim>>  search;
+      MortarCoupling<dim>                  mortar;
+      /** First DoF of every primary node each row coupled to when the
+       * pattern was last built, sorted. */
+      std::vector<std::vector<dealii::types::global_dof_index>> pattern;
+      unsigned int                                              n_changes = 0;
+
+      /** Integrate the rows where the surfaces and tools are now; the
+       * tools are translated by the displacement @p u of their reference
+       * nodes (zero if null). */
+      void
+      integrate(const VectorType *u);
+
+      /** Integrate @p rows (by secondary node) into @p target between
+       * @p secondary_surface and the primary surface @p primary_surface
+       * (with @p primary_search) or the tools placed as @p tools. */
+      void
+      integrate_rows(const ContactSurface<dim>            &secondary_surface,
+                     const ContactSurface<dim>            *primary_surface,
+                     const ContactSearch<dim>             *primary_search,
+                     const std::vector<RigidPartner<dim>> &tools,
+                     const std::vector<bool>              &rows,
+                     MortarCoupling<dim>                  &target) const;
+
+      /** The secondary nodes within two faces of node @p j (itself
+       * included), sorted. */
+      std::vector<unsigned int>
+      neighbourhood(const unsigned int j) const;
+
+      /** The coupling pattern of the current rows. */
+      std::vector<std::vector<dealii::types::global_dof_index>>
+      current_pattern() const;
+    };
+  } // namespace Contact
+} // namespace Common
+
+#endif
