@@ -31,6 +31,7 @@
 #include <common/physics/finite_strain_solid.h>
 #include <common/problems/contact_newton_problem.h>
 
+#include "../newton_rates.h"
 #include "../tests.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -275,24 +276,11 @@ main(int argc, char **argv)
       std::string rates;
       if (std::abs(drag_now - 0.5) < 1e-9)
         {
-          std::vector<double> r;
-          for (const auto &residual : statistics.residuals)
-            r.push_back(
-              std::max(residual.equilibrium, residual.complementarity));
-          quadratic_pass       = true;
-          unsigned int n_rates = 0;
-          for (unsigned int k = 1; k < r.size(); ++k)
-            if (statistics.active_set_changes[k - 1] == 0 && r[k] > 1e-10 &&
-                r[k - 1] < 1e-1)
-              {
-                const double rate = std::log(r[k]) / std::log(r[k - 1]);
-                rates += " " + format(rate, 2);
-                quadratic_pass = quadratic_pass && rate > 1.8;
-                ++n_rates;
-              }
-          quadratic_pass = quadratic_pass && n_rates >= 2;
-          rates = ", residual ratios log r(k+1)/log r(k):" + rates + " " +
-                  pass_fail(quadratic_pass);
+          const auto ratios = NewtonRates::residual_ratios(statistics);
+          quadratic_pass    = ratios.quadratic;
+          rates =
+            ", residual ratios log r(k+1)/log r(k):" + ratios.to_string() +
+            " " + pass_fail(quadratic_pass);
         }
       // Once sliding, the state moves with the block: at most two
       // iterations per step.

@@ -138,6 +138,10 @@ namespace Common
       const std::vector<bool>              &rows,
       MortarCoupling<dim>                  &target) const
     {
+      // Coincident edges of the two surfaces stay paired when an iterate
+      // moves the primary edge inwards (MortarCoupling's free-edge
+      // extension).
+      target.set_free_edge_extension(0.05);
       if (primary_surface != nullptr)
         target.reinit(secondary_surface,
                       *primary_surface,

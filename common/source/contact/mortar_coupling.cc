@@ -175,6 +175,7 @@ namespace Common
       std::vector<std::map<unsigned int, double>> weights(n_nodes);
       const std::vector<bool> paired_faces = select_faces(integrated_rows);
       std::vector<bool>       node_covered(integrated);
+      const auto              parameter_boxes = primary_parameter_boxes();
 
       const unsigned int degree = secondary->base_element().degree;
       // Exact for the products of shape functions on straight faces, and
@@ -236,8 +237,11 @@ namespace Common
               // Coverage from exact polygon areas: the quadrature sums
               // of curved faces agree with face_measure only to quadrature
               // accuracy.
-              const double fraction =
-                integrate_3d_segments(s, search, search_distance, add_point);
+              const double fraction = integrate_3d_segments(s,
+                                                            search,
+                                                            search_distance,
+                                                            parameter_boxes,
+                                                            add_point);
               covered_measure = std::abs(fraction - 1.) <= coverage_tolerance ?
                                   face_measure :
                                   fraction * face_measure;
@@ -246,7 +250,8 @@ namespace Common
             for (const unsigned int m :
                  search.faces_near(secondary->bounding_box(s, search_distance)))
               {
-                const Point<dim - 1> eta_0(0.), eta_1(1.);
+                const Point<dim - 1> &eta_0 = parameter_boxes[m][0];
+                const Point<dim - 1> &eta_1 = parameter_boxes[m][1];
                 const auto p0 = ContactSearch<dim>::project_along_normal_field(
                   *secondary,
                   s,
@@ -284,7 +289,9 @@ namespace Common
 
                     const auto projection =
                       ContactSearch<dim>::project_along(*primary, m, x, n);
-                    if (!projection.inside(1e-9) ||
+                    if (!projection.converged ||
+                        projection.eta[0] < eta_0[0] - 1e-9 ||
+                        projection.eta[0] > eta_1[0] + 1e-9 ||
                         std::abs(projection.distance) > search_distance ||
                         primary->unit_normal(m, projection.eta) * n >= 0.)
                       continue;
@@ -573,10 +580,12 @@ namespace Common
     template <int dim>
     template <typename AddPoint>
     double
-    MortarCoupling<dim>::integrate_3d_segments(const unsigned int        s,
-                                               const ContactSearch<dim> &search,
-                                               const double    search_distance,
-                                               const AddPoint &add_point) const
+    MortarCoupling<dim>::integrate_3d_segments(
+      const unsigned int                                s,
+      const ContactSearch<dim>                         &search,
+      const double                                      search_distance,
+      const std::vector<std::array<Point<dim - 1>, 2>> &parameter_boxes,
+      const AddPoint                                   &add_point) const
     {
       if constexpr (dim == 3)
         {
@@ -607,16 +616,20 @@ namespace Common
             {
               if (primary->unit_normal(m, centre) * n0 >= 0.)
                 continue;
+              const auto           &box = parameter_boxes[m];
               std::vector<Point<2>> polygon;
               for (unsigned int e = 0; e < 4; ++e)
                 for (unsigned int k = 0; k < n_primary_segments; ++k)
                   {
                     const double t =
                       static_cast<double>(k) / n_primary_segments;
-                    polygon.push_back(to_plane(primary->point(
-                      m,
+                    const Point<2> unit =
                       unit_corners[e] +
-                        t * (unit_corners[(e + 1) % 4] - unit_corners[e]))));
+                      t * (unit_corners[(e + 1) % 4] - unit_corners[e]);
+                    Point<dim - 1> eta;
+                    for (unsigned int d = 0; d < dim - 1; ++d)
+                      eta[d] = box[0][d] + unit[d] * (box[1][d] - box[0][d]);
+                    polygon.push_back(to_plane(primary->point(m, eta)));
                   }
               if (twice_signed_area(polygon) < 0.)
                 std::reverse(polygon.begin(), polygon.end());
@@ -743,13 +756,20 @@ namespace Common
                                                                 m,
                                                                 x,
                                                                 n);
-                            if (!on_primary.converged ||
-                                !on_primary.inside(0.05) ||
+                            const auto &box    = parameter_boxes[m];
+                            bool        inside = on_primary.converged;
+                            for (unsigned int d = 0; d < dim - 1; ++d)
+                              inside = inside &&
+                                       on_primary.eta[d] >= box[0][d] - 0.05 &&
+                                       on_primary.eta[d] <= box[1][d] + 0.05;
+                            if (!inside ||
                                 std::abs(on_primary.distance) > search_distance)
                               continue;
                             Point<dim - 1> eta_m = on_primary.eta;
                             for (unsigned int d = 0; d < dim - 1; ++d)
-                              eta_m[d] = std::min(1., std::max(0., eta_m[d]));
+                              eta_m[d] =
+                                std::min(box[1][d],
+                                         std::max(box[0][d], eta_m[d]));
                             add_point(xi, JxW, m, eta_m);
                           }
                       }
@@ -762,9 +782,92 @@ namespace Common
           (void)s;
           (void)search;
           (void)search_distance;
+          (void)parameter_boxes;
           (void)add_point;
           return 0.;
         }
+    }
+
+
+
+    template <int dim>
+    void
+    MortarCoupling<dim>::set_free_edge_extension(const double fraction)
+    {
+      AssertThrow(fraction >= 0. && fraction < 0.5,
+                  ExcMessage("The free-edge extension must lie in [0, 0.5)."));
+      free_edge_extension = fraction;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::array<Point<dim - 1>, 2>>
+    MortarCoupling<dim>::primary_parameter_boxes() const
+    {
+      const unsigned int                         n_faces = primary->n_faces();
+      std::vector<std::array<Point<dim - 1>, 2>> boxes(n_faces);
+      for (auto &box : boxes)
+        for (unsigned int d = 0; d < dim - 1; ++d)
+          box[1][d] = 1.;
+      if (free_edge_extension == 0.)
+        return boxes;
+
+      // The node at each corner of each face's parameter box, the corners
+      // counterclockwise from the origin; an edge of a face runs from
+      // corner e to corner e + 1 (in 2D an edge is the end node e).
+      constexpr unsigned int n_corners = dim == 2 ? 2 : 4;
+      const auto             corner    = [](const unsigned int c) {
+        Point<dim - 1> eta;
+        if constexpr (dim == 2)
+          eta[0] = c;
+        else
+          {
+            eta[0] = (c == 1 || c == 2) ? 1. : 0.;
+            eta[1] = c >= 2 ? 1. : 0.;
+          }
+        return eta;
+      };
+      const auto edge_key = [](const std::array<unsigned int, n_corners> &c,
+                               const unsigned int                         e) {
+        if constexpr (dim == 2)
+          return std::make_pair(c[e], c[e]);
+        else
+          return std::minmax(c[e], c[(e + 1) % n_corners]);
+      };
+      std::vector<std::array<unsigned int, n_corners>> corner_nodes(n_faces);
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> n_sharing;
+      std::vector<double>                                           N;
+      for (unsigned int m = 0; m < n_faces; ++m)
+        {
+          for (unsigned int c = 0; c < n_corners; ++c)
+            {
+              primary->shape_values(m, corner(c), N);
+              const auto a = std::max_element(N.begin(), N.end()) - N.begin();
+              corner_nodes[m][c] = primary->face(m).nodes[a];
+            }
+          for (unsigned int e = 0; e < n_corners; ++e)
+            ++n_sharing[edge_key(corner_nodes[m], e)];
+        }
+
+      // Which bound an edge moves: 2D: the ends eta = 0, 1; 3D: the edges
+      // eta_1 = 0, eta_0 = 1, eta_1 = 1, eta_0 = 0.
+      const double f = free_edge_extension;
+      for (unsigned int m = 0; m < n_faces; ++m)
+        for (unsigned int e = 0; e < n_corners; ++e)
+          if (n_sharing[edge_key(corner_nodes[m], e)] == 1)
+            {
+              if constexpr (dim == 2)
+                (e == 0 ? boxes[m][0][0] : boxes[m][1][0]) =
+                  e == 0 ? -f : 1. + f;
+              else
+                {
+                  const unsigned int direction       = e % 2 == 0 ? 1 : 0;
+                  const bool         upper           = e == 1 || e == 2;
+                  boxes[m][upper ? 1 : 0][direction] = upper ? 1. + f : -f;
+                }
+            }
+      return boxes;
     }
 
 

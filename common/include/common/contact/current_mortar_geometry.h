@@ -9,19 +9,23 @@
  * in 3D), each translated with a reference node's DoFs (free or
  * prescribed) and turned by a rotation the load program prescribes.
  *
- * Linearisation. The rows are held fixed within a Newton iteration: the
- * weighted gap \f$\tilde g_j = n_j\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$ is
- * exact at every iterate (the rows are integrated where the surfaces are),
- * and its increment is taken as \f$n_j\cdot(\sum_k M_{jk}\Delta u_k - D_j
- * \Delta u_j)\f$. The terms dropped are the derivatives of n_j, M and D:
- * \f$\delta n_j\f$ multiplies \f$\int\psi_j g\,n\f$, which vanishes with
- * the gap, and \f$\delta M\f$, \f$\delta D\f$ move partner points along
- * the primary surface, which changes the gap only where the two normals
- * differ. Both vanish at a converged closed node of a flat contact, where
- * the iteration keeps the quadratic rate of the semismooth Newton method;
- * on curved surfaces the dropped curvature term (pressure over radius) makes
- * the rate linear with a small factor (measured in
- * tests/common/current_contact_*).
+ * Linearisation. The weighted gap
+ * \f$\tilde g_j = n_j\cdot(\sum_k M_{jk}x_k - D_j x_j)\f$ is exact at
+ * every iterate (the rows are integrated where the surfaces are). The
+ * tangent holds the increment of the gap with the rows fixed,
+ * \f$n_j\cdot(\sum_k M_{jk}\Delta u_k - D_j\Delta u_j)\f$, and the
+ * geometric stiffness of contact: the derivative of the contact forces
+ * with respect to the nodal positions at fixed nodal forces, which
+ * contains the change of n_j, D and M (pairing and segmentation
+ * included), by difference quotients (contact_force_derivative()). With
+ * it the semismooth Newton method converges quadratically also where the
+ * faces slide under pressure (tests/common/current_contact_*).
+ *
+ * Free edges. Where the edges of the two surfaces coincide (two blocks of
+ * one material compressed together), an iterate that moves the primary
+ * edge inwards would leave the last secondary face partly uncovered; the
+ * free edges of a meshed primary surface are therefore extended by 5 % of
+ * a face (MortarCoupling::set_free_edge_extension()).
  *
  * Slip is measured objectively (after A. Popp et al., IJNME 83 (2010)
  * 1428-1465 and M. Gitterle et al., IJNME 84 (2010) 543-571): the

@@ -199,6 +199,22 @@ namespace Common
       is_integrated(const unsigned int j) const;
 
       /**
+       * @brief Let the meshed reinit() extend every free edge of the
+       * primary surface (an edge that no other primary face shares) by
+       * @p fraction of its face's parameter range, extrapolating the face.
+       *
+       * Where the edges of the two surfaces coincide (two bodies of one
+       * material compressed together), an iterate that moves the primary
+       * edge inwards by a round-off amount would leave the last secondary
+       * face partly uncovered and drop its end node from contact. The
+       * extension keeps it paired; at the converged state the extension
+       * covers nothing that the surfaces do not share. Zero (the default)
+       * integrates over the faces as they are.
+       */
+      void
+      set_free_edge_extension(const double fraction);
+
+      /**
        * @brief Adapt the rows to the hanging nodes of the secondary
        * surface; call after reinit().
        *
@@ -287,15 +303,19 @@ namespace Common
 
     private:
       /** 3D: integrate secondary face @p s against its primary faces by
-       * polygon clipping; calls @p add_point(xi, JxW, m, eta_m) for every
-       * integration point.
+       * polygon clipping, each primary face over its box of
+       * @p parameter_boxes (primary_parameter_boxes()); calls
+       * @p add_point(xi, JxW, m, eta_m) for every integration point.
        * @return The covered fraction of the face (1 if fully covered). */
       template <typename AddPoint>
       double
-      integrate_3d_segments(const unsigned int        s,
-                            const ContactSearch<dim> &search,
-                            const double              search_distance,
-                            const AddPoint           &add_point) const;
+      integrate_3d_segments(
+        const unsigned int        s,
+        const ContactSearch<dim> &search,
+        const double              search_distance,
+        const std::vector<std::array<dealii::Point<dim - 1>, 2>>
+                       &parameter_boxes,
+        const AddPoint &add_point) const;
 
       /** The parents of each hanging node of @p secondary (secondary
        * nodes, with their interpolation weights; empty for other nodes). */
@@ -325,6 +345,15 @@ namespace Common
       std::vector<dealii::FullMatrix<double>> dual_coefficients;
       /** The rows integrated by the last reinit(), by secondary node. */
       std::vector<bool> integrated;
+      /** Extension of the free primary edges, as a fraction of a face's
+       * parameter range (set_free_edge_extension()). */
+      double free_edge_extension = 0.;
+
+      /** The parameter box of each primary face, extended past its free
+       * edges by free_edge_extension: lower and upper bound per
+       * direction. */
+      std::vector<std::array<dealii::Point<dim - 1>, 2>>
+      primary_parameter_boxes() const;
     };
   } // namespace Contact
 } // namespace Common
