@@ -9,6 +9,7 @@
 
 #include <common/analytic/coupled_partial_slip.h>
 #include <common/contact/contact_postprocessor.h>
+#include <common/contact/current_mortar_geometry.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
 #include <common/io/timer.h>
@@ -171,21 +172,19 @@ namespace CgsRoller
                                    1e-8 * parameters.geometry.roller_radius,
                                    "the top of the roller");
 
-    setup_contact_problem(
-      Common::Physics::create_solid_operator<dim>(
-        parameters.solid,
-        mapping,
-        fe,
-        {{MaterialIds::roller, parameters.roller_material},
-         {MaterialIds::block, parameters.block_material}}),
-      std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
-        dof_handler,
-        mapping,
-        parameters.contact.secondary_boundary_id,
-        parameters.contact.primary_boundary_id,
-        parameters.contact.search_distance,
-        false),
-      parameters.block_material.youngs_modulus);
+    setup_contact_problem(Common::Physics::create_solid_operator<dim>(
+                            parameters.solid,
+                            mapping,
+                            fe,
+                            {{MaterialIds::roller, parameters.roller_material},
+                             {MaterialIds::block, parameters.block_material}}),
+                          Common::Contact::create_mortar_geometry<dim>(
+                            dof_handler,
+                            mapping,
+                            parameters.contact,
+                            parameters.solid.finite_strain(),
+                            false),
+                          parameters.block_material.youngs_modulus);
   }
 
 

@@ -5,6 +5,7 @@
  */
 #include "pin_problem.h"
 
+#include <common/contact/current_mortar_geometry.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/physics/boundary_conditions.h>
 #include <common/physics/solid_model.h>
@@ -94,21 +95,19 @@ namespace LoadedPin
                         MaterialIds::sheet,
                         "the lug's tip");
 
-    setup_contact_problem(
-      Common::Physics::create_solid_operator<dim>(
-        parameters.solid,
-        mapping,
-        fe,
-        {{MaterialIds::pin, parameters.pin_material},
-         {MaterialIds::sheet, parameters.sheet_material}}),
-      std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
-        dof_handler,
-        mapping,
-        parameters.contact.secondary_boundary_id,
-        parameters.contact.primary_boundary_id,
-        parameters.contact.search_distance,
-        false),
-      parameters.sheet_material.youngs_modulus);
+    setup_contact_problem(Common::Physics::create_solid_operator<dim>(
+                            parameters.solid,
+                            mapping,
+                            fe,
+                            {{MaterialIds::pin, parameters.pin_material},
+                             {MaterialIds::sheet, parameters.sheet_material}}),
+                          Common::Contact::create_mortar_geometry<dim>(
+                            dof_handler,
+                            mapping,
+                            parameters.contact,
+                            parameters.solid.finite_strain(),
+                            false),
+                          parameters.sheet_material.youngs_modulus);
   }
 
 

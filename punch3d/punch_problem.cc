@@ -8,6 +8,7 @@
  */
 #include "punch_problem.h"
 
+#include <common/contact/current_mortar_geometry.h>
 #include <common/geometry/revolution.h>
 #include <common/geometry/two_body_meshes.h>
 #include <common/io/plotting.h>
@@ -186,12 +187,11 @@ namespace Punch3d
     const bool axisymmetric =
       kinematics() == Common::Physics::Kinematics::axisymmetric;
     if (!parameters.model.rigid_surface)
-      return std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
+      return Common::Contact::create_mortar_geometry<dim>(
         dof_handler,
         mapping,
-        parameters.contact.secondary_boundary_id,
-        parameters.contact.primary_boundary_id,
-        parameters.contact.search_distance,
+        parameters.contact,
+        parameters.solid.finite_strain(),
         axisymmetric);
 
     const auto                   &g   = parameters.geometry;
@@ -215,15 +215,16 @@ namespace Punch3d
                                      1e-8 * a,
                                      "the top of the punch on the axis",
                                      MaterialIds::punch);
-    return std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
+    return Common::Contact::create_mortar_geometry<dim>(
       dof_handler,
       mapping,
-      parameters.contact.secondary_boundary_id,
+      parameters.contact,
+      parameters.solid.finite_strain(),
+      "punch",
       std::make_shared<const Common::Contact::RigidSurface<dim>>(
         profile,
         Common::Contact::ProfileSweep::revolution_about_y),
       reference_node_dofs,
-      parameters.contact.search_distance,
       axisymmetric);
   }
 

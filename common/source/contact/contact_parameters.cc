@@ -85,6 +85,17 @@ namespace Common
                           "oversized zone only linearly. It is switched off "
                           "for the rest of the step as soon as it opens too "
                           "much. Affects the iteration path only.");
+        prm.declare_entry(
+          "Configuration",
+          "automatic",
+          Patterns::Selection("automatic|reference|current"),
+          "Where the mortar rows are paired and integrated: 'reference' "
+          "(once, on the undeformed surfaces: small strain and small "
+          "sliding), 'current' (again at every Newton iterate, on the "
+          "deformed surfaces: finite strain, large sliding and rotation; "
+          "needs 'Kinematics = finite strain' in subsection Solid), or "
+          "'automatic' (current under finite-strain kinematics, reference "
+          "otherwise).");
       }
       prm.leave_subsection();
     }
@@ -111,8 +122,12 @@ namespace Common
         ncp_factor           = prm.get_double("NCP constant factor");
         tangential_ncp_factor =
           prm.get_double("Tangential NCP constant factor");
-        search_distance    = prm.get_double("Search distance");
-        accelerate_release = prm.get_bool("Accelerate active set release");
+        search_distance         = prm.get_double("Search distance");
+        accelerate_release      = prm.get_bool("Accelerate active set release");
+        const std::string where = prm.get("Configuration");
+        configuration = where == "current"   ? ContactConfiguration::current :
+                        where == "reference" ? ContactConfiguration::reference :
+                                               ContactConfiguration::automatic;
       }
       prm.leave_subsection();
       AssertThrow(primary_boundary_id != secondary_boundary_id,
@@ -133,6 +148,21 @@ namespace Common
                              "= lagrange multiplier'."));
       AssertThrow(search_distance > 0.,
                   ExcMessage("Contact: 'Search distance' must be positive."));
+    }
+
+
+
+    bool
+    ContactParameters::in_current_configuration(const bool finite_strain) const
+    {
+      AssertThrow(configuration != ContactConfiguration::current ||
+                    finite_strain,
+                  ExcMessage("Contact: 'Configuration = current' needs "
+                             "'Kinematics = finite strain' in subsection "
+                             "Solid."));
+      return configuration == ContactConfiguration::current ||
+             (configuration == ContactConfiguration::automatic &&
+              finite_strain);
     }
   } // namespace Contact
 } // namespace Common

@@ -1,5 +1,6 @@
 #include <common/contact/current_mortar_geometry.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <algorithm>
@@ -10,6 +11,43 @@ namespace Common
   namespace Contact
   {
     using namespace dealii;
+
+    namespace
+    {
+      /** The rotation about the axis a x b that takes the unit vector @p a
+       * to the unit vector @p b (Rodrigues; the identity if they agree or
+       * are opposite). */
+      template <int dim>
+      Tensor<2, dim>
+      rotation_between(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
+      {
+        Tensor<2, dim> Q    = unit_symmetric_tensor<dim>();
+        const double   cosa = a * b;
+        if (cosa <= -1. + 1e-12 || a.norm() == 0. || b.norm() == 0.)
+          return Q;
+        if constexpr (dim == 2)
+          {
+            const double sina = a[0] * b[1] - a[1] * b[0];
+            Q[0][0]           = cosa;
+            Q[0][1]           = -sina;
+            Q[1][0]           = sina;
+            Q[1][1]           = cosa;
+          }
+        else
+          {
+            const Tensor<1, dim> k = cross_product_3d(a, b);
+            Tensor<2, dim>       K;
+            K[0][1] = -k[2];
+            K[0][2] = k[1];
+            K[1][0] = k[2];
+            K[1][2] = -k[0];
+            K[2][0] = -k[1];
+            K[2][1] = k[0];
+            Q += K + K * K / (1. + cosa);
+          }
+        return Q;
+      }
+    } // namespace
 
     template <int dim>
     CurrentMortarGeometry<dim>::CurrentMortarGeometry(
@@ -93,6 +131,9 @@ namespace Common
                                                         primary_id);
       integrate(nullptr);
       pattern = current_pattern();
+      accepted_normals.resize(mortar.n_rows());
+      for (unsigned int j = 0; j < mortar.n_rows(); ++j)
+        accepted_normals[j] = mortar.row(j).normal;
     }
 
 
@@ -494,6 +535,8 @@ namespace Common
     CurrentMortarGeometry<dim>::commit()
     {
       accepted_angle = angle;
+      for (unsigned int j = 0; j < mortar.n_rows(); ++j)
+        accepted_normals[j] = mortar.row(j).normal;
     }
 
 
@@ -506,7 +549,30 @@ namespace Common
       std::vector<Tensor<1, dim>> result =
         ContactGeometry<dim>::accepted_relative_displacements(u_accepted);
       if (tools.empty())
-        return result;
+        {
+          // The accepted relative position of the pair,
+          // (sum_k M_jk x_k - D_j x_j)/D_j at the accepted positions, turns
+          // with the surface: it is compared with the current one after
+          // the rotation Q_j that takes the accepted normal to the current
+          // one, so that a rigid motion of both bodies is no slip also
+          // where the mortar partner point lies off the node (by the
+          // pointwise gap times the turn of the normal field).
+          for (unsigned int j = 0; j < mortar.n_rows(); ++j)
+            {
+              const auto &row = mortar.row(j);
+              if (!mortar.is_integrated(j) || row.weight == 0. ||
+                  !row.has_partner)
+                continue;
+              Tensor<1, dim> reference = -secondary->node(j).reference_position;
+              for (const auto &[k, M] : row.primary_weights)
+                reference +=
+                  M / row.weight * mortar.primary_node(k).reference_position;
+              const Tensor<2, dim> Q =
+                rotation_between(accepted_normals[j], row.normal);
+              result[j] = Q * (result[j] + reference) - reference;
+            }
+          return result;
+        }
       // A partner point x of tool i, now at c + s + R(theta) (Y - c), was at
       // c + s_old + R(theta_old) (Y - c): besides the translation (read from
       // the reference node's DoFs) it moved by (I - R_old R^T)(x - s - c),
@@ -615,13 +681,140 @@ namespace Common
 
 
     template <int dim>
+    std::vector<ToolLoad<dim>>
+    CurrentMortarGeometry<dim>::tool_loads(
+      const ContactState<dim> &state,
+      const IndexSet          &locally_owned,
+      const MPI_Comm           mpi_communicator) const
+    {
+      std::vector<ToolLoad<dim>> loads(tools.size());
+      for (unsigned int j = 0; j < mortar.n_rows(); ++j)
+        {
+          const MortarRow<dim> &row = mortar.row(j);
+          if (!row.has_partner ||
+              !locally_owned.is_element(secondary->node(j).dofs[0]))
+            continue;
+          const NodeState<dim> &node = state.node(j);
+          const Tensor<1, dim>  traction =
+            -node.pressure * row.normal + node.tangential_traction;
+          for (const auto &[k, M] : row.primary_weights)
+            {
+              const unsigned int   i     = tool_of_primary_node(k);
+              const Tensor<1, dim> force = -M * traction;
+              // The stored point is the partner point less the tool's
+              // translation, and so is the stored centre: their difference
+              // is the lever arm where the tool is now.
+              const Tensor<1, dim> arm =
+                mortar.primary_node(k).reference_position - tools[i].centre;
+              loads[i].force += force;
+              if constexpr (dim == 2)
+                loads[i].moment[2] += arm[0] * force[1] - arm[1] * force[0];
+              else
+                loads[i].moment += cross_product_3d(arm, force);
+            }
+        }
+      for (auto &load : loads)
+        {
+          load.force  = Utilities::MPI::sum(load.force, mpi_communicator);
+          load.moment = Utilities::MPI::sum(load.moment, mpi_communicator);
+        }
+      return loads;
+    }
+
+
+
+    template <int dim>
     unsigned int
     CurrentMortarGeometry<dim>::n_pattern_changes() const
     {
       return n_changes;
     }
 
+
+
+    template <int dim>
+    std::unique_ptr<ContactGeometry<dim>>
+    create_mortar_geometry(const DoFHandler<dim>   &dof_handler,
+                           const Mapping<dim>      &mapping,
+                           const ContactParameters &contact,
+                           const bool               finite_strain,
+                           const bool               axisymmetric)
+    {
+      if (contact.in_current_configuration(finite_strain))
+        return std::make_unique<CurrentMortarGeometry<dim>>(
+          dof_handler,
+          mapping,
+          contact.secondary_boundary_id,
+          contact.primary_boundary_id,
+          contact.search_distance,
+          axisymmetric);
+      return std::make_unique<ReferenceMortarGeometry<dim>>(
+        dof_handler,
+        mapping,
+        contact.secondary_boundary_id,
+        contact.primary_boundary_id,
+        contact.search_distance,
+        axisymmetric);
+    }
+
+
+
+    template <int dim>
+    std::unique_ptr<ContactGeometry<dim>>
+    create_mortar_geometry(
+      const DoFHandler<dim>                          &dof_handler,
+      const Mapping<dim>                             &mapping,
+      const ContactParameters                        &contact,
+      const bool                                      finite_strain,
+      const std::string                              &name,
+      const std::shared_ptr<const RigidSurface<dim>> &rigid,
+      const std::array<types::global_dof_index, dim> &reference_node_dofs,
+      const bool                                      axisymmetric)
+    {
+      if (contact.in_current_configuration(finite_strain))
+        {
+          RigidTool<dim> tool;
+          tool.name                = name;
+          tool.surface             = rigid;
+          tool.reference_node_dofs = reference_node_dofs;
+          return std::make_unique<CurrentMortarGeometry<dim>>(
+            dof_handler,
+            mapping,
+            contact.secondary_boundary_id,
+            std::vector<RigidTool<dim>>{tool},
+            contact.search_distance,
+            axisymmetric);
+        }
+      return std::make_unique<ReferenceMortarGeometry<dim>>(
+        dof_handler,
+        mapping,
+        contact.secondary_boundary_id,
+        rigid,
+        reference_node_dofs,
+        contact.search_distance,
+        axisymmetric);
+    }
+
     template class CurrentMortarGeometry<2>;
     template class CurrentMortarGeometry<3>;
+#define INSTANTIATE(dim)                                                      \
+  template std::unique_ptr<ContactGeometry<dim>> create_mortar_geometry<dim>( \
+    const DoFHandler<dim> &,                                                  \
+    const Mapping<dim> &,                                                     \
+    const ContactParameters &,                                                \
+    const bool,                                                               \
+    const bool);                                                              \
+  template std::unique_ptr<ContactGeometry<dim>> create_mortar_geometry<dim>( \
+    const DoFHandler<dim> &,                                                  \
+    const Mapping<dim> &,                                                     \
+    const ContactParameters &,                                                \
+    const bool,                                                               \
+    const std::string &,                                                      \
+    const std::shared_ptr<const RigidSurface<dim>> &,                         \
+    const std::array<types::global_dof_index, dim> &,                         \
+    const bool);
+    INSTANTIATE(2)
+    INSTANTIATE(3)
+#undef INSTANTIATE
   } // namespace Contact
 } // namespace Common

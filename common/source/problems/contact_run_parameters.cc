@@ -34,6 +34,8 @@ namespace Common
     {
       solid.parse_parameters(prm);
       contact.parse_parameters(prm);
+      // Checks the contact configuration against the kinematics.
+      contact.in_current_configuration(solid.finite_strain());
       nonlinear_solver.parse_parameters(prm);
       linear_solver.parse_parameters(prm);
       load_program.channels = channels;

@@ -33,6 +33,19 @@ namespace Common
       coulomb
     };
 
+    /** Values of the parameter "Configuration" in subsection "Contact". */
+    enum class ContactConfiguration
+    {
+      /** Current under finite-strain kinematics, reference otherwise. */
+      automatic,
+      /** Rows paired and integrated once, in the undeformed configuration
+       * (ReferenceMortarGeometry). */
+      reference,
+      /** Rows paired and integrated again at every Newton iterate, in the
+       * deformed configuration (CurrentMortarGeometry). */
+      current
+    };
+
     /**
      * @brief One contact pair: a primary (projection target) and a secondary
      * (integration and multiplier) surface, with its enforcement.
@@ -46,6 +59,15 @@ namespace Common
       /** @brief Read and check the entries of subsection "Contact". */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * @brief True if the rows are integrated in the current
+       * configuration with the kinematics of the solid: 'current', or
+       * 'automatic' with @p finite_strain. Throws for 'current' with
+       * small-strain kinematics.
+       */
+      bool
+      in_current_configuration(const bool finite_strain) const;
 
       /** @brief True if Coulomb friction with mu > 0 is enforced. */
       bool
@@ -75,6 +97,8 @@ namespace Common
       double search_distance;
       /** Extrapolate pure release steps of the active set (path only). */
       bool accelerate_release;
+      /** Where the mortar rows are integrated. */
+      ContactConfiguration configuration = ContactConfiguration::automatic;
     };
   } // namespace Contact
 } // namespace Common

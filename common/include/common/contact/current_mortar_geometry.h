@@ -40,6 +40,12 @@
 #define common_contact_current_mortar_geometry_h
 
 #include <common/contact/contact_geometry.h>
+#include <common/contact/contact_parameters.h>
+#include <common/contact/contact_state.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
 
 #include <functional>
 #include <memory>
@@ -74,6 +80,21 @@ namespace Common
     };
 
 
+
+    /**
+     * @brief The contact force on a rigid tool and its moment.
+     */
+    template <int dim>
+    struct ToolLoad
+    {
+      /** Force of the secondary body on the tool (N; N per mm of thickness
+       * in plane strain, the full ring if axisymmetric). */
+      dealii::Tensor<1, dim> force;
+      /** Moment of that force about the tool's centre where it is now
+       * (N mm; per mm of thickness in plane strain); in 2D only the z
+       * component is set. */
+      dealii::Tensor<1, 3> moment;
+    };
 
     /**
      * @brief Mortar rows integrated again for every displacement, between
@@ -147,7 +168,10 @@ namespace Common
 
       /** @brief MortarCoupling::relative_displacement() at @p u_accepted,
        * less, for a row paired with a tool, the displacement of the tool's
-       * partner points by the tool's rotation since the accepted state. */
+       * partner points by the tool's rotation since the accepted state.
+       * Against a meshed primary surface the accepted relative position of
+       * the pair is turned with the node's normal since the accepted state,
+       * so that a rigid rotation of both bodies is no slip. */
       std::vector<dealii::Tensor<1, dim>>
       accepted_relative_displacements(
         const VectorType &u_accepted) const override;
@@ -200,6 +224,24 @@ namespace Common
       double
       tool_angle(const unsigned int i) const;
 
+      /**
+       * @brief The contact force and moment on each tool at the current
+       * rows and tractions: tool i receives \f$-\sum_j M_{jk}\tau_j\f$
+       * from each row j at its primary node k on the tool, applied at that
+       * node's point \f$\bar X_{jk}\f$ (the dual-weighted mean of the
+       * row's partner points on the tool), with the traction
+       * \f$\tau_j = -p_j n_j + t_j\f$ of the secondary node. The forces
+       * are those the primary side receives in the residual, so they
+       * balance the secondary body's reactions exactly. Sums over the rows
+       * of the rank's own secondary nodes (@p locally_owned), then over
+       * @p mpi_communicator; the result is the same on every rank. Empty
+       * for a meshed primary surface.
+       */
+      std::vector<ToolLoad<dim>>
+      tool_loads(const ContactState<dim> &state,
+                 const dealii::IndexSet  &locally_owned,
+                 const MPI_Comm           mpi_communicator) const;
+
       /** @brief Number of times update() found a changed coupling
        * pattern. */
       unsigned int
@@ -218,6 +260,8 @@ namespace Common
       std::vector<std::unique_ptr<RigidSurface<dim>>> placed;
       std::vector<double>                             angle;
       std::vector<double>                             accepted_angle;
+      /** The nodal normals of the rows at the last accepted state. */
+      std::vector<dealii::Tensor<1, dim>> accepted_normals;
       /** The tools as last placed by integrate(). */
       std::vector<RigidPartner<dim>> partners;
       /** The faces of the secondary surface around each of its nodes. */
@@ -258,6 +302,39 @@ namespace Common
       std::vector<std::vector<dealii::types::global_dof_index>>
       current_pattern() const;
     };
+
+    /**
+     * @brief The mortar geometry of a pair of meshed surfaces that
+     * @p contact asks for (ContactParameters::in_current_configuration()
+     * with @p finite_strain): a CurrentMortarGeometry or a
+     * ReferenceMortarGeometry.
+     */
+    template <int dim>
+    std::unique_ptr<ContactGeometry<dim>>
+    create_mortar_geometry(const dealii::DoFHandler<dim> &dof_handler,
+                           const dealii::Mapping<dim>    &mapping,
+                           const ContactParameters       &contact,
+                           const bool                     finite_strain,
+                           const bool                     axisymmetric);
+
+    /**
+     * @brief The mortar geometry of a meshed secondary surface against the
+     * analytic rigid surface @p rigid, translated with the reference node
+     * whose DoFs are @p reference_node_dofs: a CurrentMortarGeometry with
+     * one RigidTool named @p name, or a ReferenceMortarGeometry.
+     */
+    template <int dim>
+    std::unique_ptr<ContactGeometry<dim>>
+    create_mortar_geometry(
+      const dealii::DoFHandler<dim>                  &dof_handler,
+      const dealii::Mapping<dim>                     &mapping,
+      const ContactParameters                        &contact,
+      const bool                                      finite_strain,
+      const std::string                              &name,
+      const std::shared_ptr<const RigidSurface<dim>> &rigid,
+      const std::array<dealii::types::global_dof_index, dim>
+                &reference_node_dofs,
+      const bool axisymmetric);
   } // namespace Contact
 } // namespace Common
 
