@@ -328,24 +328,17 @@ namespace TwoBlockPatch
 
       const bool axisymmetric =
         setting.kinematics == Common::Physics::Kinematics::axisymmetric;
-      if (current_configuration)
-        contact_geometry =
-          std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
-            dof_handler,
-            mapping,
-            contact.secondary_boundary_id,
-            contact.primary_boundary_id,
-            contact.search_distance,
-            axisymmetric);
-      else
-        contact_geometry =
-          std::make_unique<Common::Contact::ReferenceMortarGeometry<dim>>(
-            dof_handler,
-            mapping,
-            contact.secondary_boundary_id,
-            contact.primary_boundary_id,
-            contact.search_distance,
-            axisymmetric);
+      // Finite-strain kinematics only matter to the choice of geometry.
+      contact.configuration =
+        current_configuration ?
+          Common::Contact::ContactConfiguration::current :
+          Common::Contact::ContactConfiguration::reference;
+      contact_geometry =
+        Common::Contact::create_mortar_geometry<dim>(dof_handler,
+                                                     mapping,
+                                                     contact,
+                                                     current_configuration,
+                                                     axisymmetric);
       contact_problem =
         std::make_unique<Common::Problems::ContactNewtonProblem<dim>>(
           dof_handler,
