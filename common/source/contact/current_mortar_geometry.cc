@@ -563,10 +563,12 @@ namespace Common
               if (!mortar.is_integrated(j) || row.weight == 0. ||
                   !row.has_partner)
                 continue;
-              Tensor<1, dim> reference = -secondary->node(j).reference_position;
+              // sum_k M_jk = D_j: differences of nearby points.
+              const Point<dim> &X_j = secondary->node(j).reference_position;
+              Tensor<1, dim>    reference;
               for (const auto &[k, M] : row.primary_weights)
-                reference +=
-                  M / row.weight * mortar.primary_node(k).reference_position;
+                reference += M / row.weight *
+                             (mortar.primary_node(k).reference_position - X_j);
               const Tensor<2, dim> Q =
                 rotation_between(accepted_normals[j], row.normal);
               result[j] = Q * (result[j] + reference) - reference;

@@ -361,11 +361,17 @@ namespace Common
             }
           // The gap of the reference geometry once: later gaps add only
           // displacements, so their round-off scales with the displacement
-          // and not with the coordinates.
-          Tensor<1, dim> d;
+          // and not with the coordinates. Since sum_k M_jk = D_j, it is
+          // sum_k M_jk (X_k - X_j), formed from differences of nearby
+          // points: the products M_jk X_k of absolute coordinates would
+          // leave a round-off of |X| times the machine precision, which in
+          // the current configuration changes with every iterate.
+          const Point<dim> &X_j = secondary->node(j).reference_position;
+          Tensor<1, dim>    d;
           for (const auto &[k, M] : rows[j].primary_weights)
-            d += M * primary_nodes[k].reference_position;
-          d -= rows[j].weight * secondary->node(j).reference_position;
+            d += M * (primary_nodes[k].reference_position - X_j);
+          if (!rows[j].has_partner)
+            d -= rows[j].weight * X_j;
           rows[j].reference_weighted_gap = rows[j].normal * d;
         }
     }
@@ -1031,14 +1037,17 @@ namespace Common
               const MortarRow<dim> &source = original[v];
               weight += coefficient * source.weight;
               has_partner = has_partner && source.has_partner;
+              // sum_k M_vk = D_v on a row with a partner: the gap of
+              // source row v from differences, as in reinit().
+              const Point<dim> &X_v = secondary->node(v).reference_position;
               for (const auto &[k, value] : source.primary_weights)
                 {
                   merged[k] += coefficient * value;
-                  gap +=
-                    coefficient * value * primary_nodes[k].reference_position;
+                  gap += coefficient * value *
+                         (primary_nodes[k].reference_position - X_v);
                 }
-              gap -= coefficient * source.weight *
-                     secondary->node(v).reference_position;
+              if (!source.has_partner)
+                gap -= coefficient * source.weight * X_v;
             }
           // The secondary terms sum to Lambda_a u_a for every displacement
           // of the constrained space; weight is Lambda_a.
