@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace Common
 {
@@ -21,6 +22,7 @@ namespace Common
       , tangential_ncp_factor(parameters.tangential_ncp_factor)
       , reference_modulus(reference_modulus)
       , accelerate_release(parameters.accelerate_release)
+      , initial_active_set(parameters.initial_active_set)
       , cycling(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
@@ -104,6 +106,44 @@ namespace Common
       if (!held && nearest != numbers::invalid_unsigned_int &&
           rows.is_held(nearest))
         status[nearest] = friction.status_on_contact();
+
+      if (initial_active_set == InitialActiveSet::nearest_per_body)
+        {
+          // Each rank's nearest owned node per body, then the nearest over
+          // the ranks (the first node on ties, as in serial).
+          std::map<types::global_dof_index, std::pair<double, unsigned int>>
+            best;
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              if (!rows.is_owned(j) || !nodes[j].paired ||
+                  nodes[j].weight <= 0.)
+                continue;
+              const auto it = best.find(nodes[j].partner);
+              if (it == best.end() || nodes[j].nodal_gap < it->second.first)
+                best[nodes[j].partner] = {nodes[j].nodal_gap, j};
+            }
+          if (rows.is_distributed())
+            {
+              std::map<types::global_dof_index, std::pair<double, unsigned int>>
+                merged;
+              for (const auto &part :
+                   Utilities::MPI::all_gather(rows.communicator(), best))
+                for (const auto &[body, candidate] : part)
+                  {
+                    const auto it = merged.find(body);
+                    if (it == merged.end() ||
+                        candidate.first < it->second.first ||
+                        (candidate.first == it->second.first &&
+                         candidate.second < it->second.second))
+                      merged[body] = candidate;
+                  }
+              best = merged;
+            }
+          std::fill(status.begin(), status.end(), PointStatus::open);
+          for (const auto &[body, candidate] : best)
+            if (rows.is_held(candidate.second))
+              status[candidate.second] = friction.status_on_contact();
+        }
       state.reset(status);
     }
 

@@ -36,6 +36,16 @@ namespace Common
           nodes[j].position = coupling.secondary_surface().node(j).position;
           if (row.has_partner)
             nodes[j].weighted_gap = row.reference_weighted_gap;
+          if (row.has_partner && coupling.primary_is_rigid())
+            {
+              double largest = -1.;
+              for (const auto &[k, M] : row.primary_weights)
+                if (M > largest)
+                  {
+                    largest          = M;
+                    nodes[j].partner = coupling.primary_node(k).dofs[0];
+                  }
+            }
         }
       return nodes;
     }

@@ -231,6 +231,32 @@ namespace Common
 
     template <int dim>
     void
+    ContactEnforcement<dim>::keep_linearized_compression(
+      const VectorType &linearized_residual)
+    {
+      if (!normal->has_multipliers())
+        return;
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        {
+          if (!contact_state.rows().is_held(j))
+            continue;
+          NodeState<dim> &node = contact_state.node(j);
+          if (node.status == PointStatus::open || node.pressure >= 0.)
+            continue;
+          const MortarRow<dim> &row = coupling.row(j);
+          const auto    &dofs       = coupling.secondary_surface().node(j).dofs;
+          Tensor<1, dim> r;
+          for (unsigned int c = 0; c < dim; ++c)
+            r[c] = linearized_residual(dofs[c]);
+          node.pressure =
+            std::max(node.pressure, (r * row.normal) / row.weight);
+        }
+    }
+
+
+
+    template <int dim>
+    void
     ContactEnforcement<dim>::add_contact_forces(
       const AffineConstraints<double> &constraints,
       const IndexSet                  &locally_owned,

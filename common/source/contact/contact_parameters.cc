@@ -86,6 +86,20 @@ namespace Common
                           "for the rest of the step as soon as it opens too "
                           "much. Affects the iteration path only.");
         prm.declare_entry(
+          "Initial active set",
+          "touching",
+          Patterns::Selection("touching|nearest per body"),
+          "Which secondary nodes the first active set closes. touching: "
+          "every paired node that touches its partner (gap below 1e-8 of "
+          "its face), so that a body held only by contact is held from the "
+          "first iteration on. nearest per body: only the paired node "
+          "nearest to each primary body (each rigid tool, or the meshed "
+          "primary surface; the first node in the surface's order on "
+          "ties), for a body that rests on a flat tool and lifts off under "
+          "load, where closing the whole touching zone would make the "
+          "semismooth Newton method release it one node per iteration. "
+          "Affects the iteration path only.");
+        prm.declare_entry(
           "Configuration",
           "automatic",
           Patterns::Selection("automatic|reference|current"),
@@ -124,6 +138,9 @@ namespace Common
           prm.get_double("Tangential NCP constant factor");
         search_distance         = prm.get_double("Search distance");
         accelerate_release      = prm.get_bool("Accelerate active set release");
+        initial_active_set      = prm.get("Initial active set") == "touching" ?
+                                    InitialActiveSet::touching :
+                                    InitialActiveSet::nearest_per_body;
         const std::string where = prm.get("Configuration");
         configuration = where == "current"   ? ContactConfiguration::current :
                         where == "reference" ? ContactConfiguration::reference :

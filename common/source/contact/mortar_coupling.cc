@@ -1123,6 +1123,15 @@ namespace Common
 
 
     template <int dim>
+    bool
+    MortarCoupling<dim>::primary_is_rigid() const
+    {
+      return primary == nullptr;
+    }
+
+
+
+    template <int dim>
     unsigned int
     MortarCoupling<dim>::n_primary_nodes() const
     {

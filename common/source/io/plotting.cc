@@ -39,6 +39,10 @@ namespace Common
           gp << "set logscale xy\n";
         if (!plot.x_range.empty())
           gp << "set xrange " << plot.x_range << "\n";
+        if (!plot.y_range.empty())
+          gp << "set yrange " << plot.y_range << "\n";
+        if (plot.equal_axes)
+          gp << "set size ratio -1\n";
         gp << "plot ";
         for (unsigned int i = 0; i < plot.series.size(); ++i)
           {

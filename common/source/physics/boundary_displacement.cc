@@ -1,11 +1,13 @@
 /*
- * Displacement profiles along a boundary, sampled at support points.
+ * Displacement profiles along a boundary, sampled at support points, and
+ * the displacement of a material point.
  */
 #include <common/physics/boundary_displacement.h>
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
 
@@ -93,6 +95,48 @@ namespace Common
 
 
 
+    template <int dim>
+    Tensor<1, dim>
+    displacement_at(const Mapping<dim>                  &mapping,
+                    const DoFHandler<dim>               &dof_handler,
+                    const TrilinosWrappers::MPI::Vector &u,
+                    const Point<dim>                    &point,
+                    const std::string                   &what)
+    {
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+        found;
+      try
+        {
+          found = GridTools::find_active_cell_around_point(mapping,
+                                                           dof_handler,
+                                                           point);
+        }
+      catch (...)
+        {
+          AssertThrow(false, ExcMessage("No cell holds " + what + "."));
+        }
+      AssertThrow(found.first.state() == IteratorState::valid,
+                  ExcMessage("No cell holds " + what + "."));
+      Tensor<1, dim> value;
+      if (found.first->is_locally_owned())
+        {
+          const Quadrature<dim> at_point(
+            GeometryInfo<dim>::project_to_unit_cell(found.second));
+          FEValues<dim> fe_values(mapping,
+                                  dof_handler.get_fe(),
+                                  at_point,
+                                  update_values);
+          fe_values.reinit(found.first);
+          std::vector<Tensor<1, dim>> values(1);
+          fe_values[FEValuesExtractors::Vector(0)].get_function_values(u,
+                                                                       values);
+          value = values[0];
+        }
+      return Utilities::MPI::sum(value, dof_handler.get_communicator());
+    }
+
+
+
     template std::vector<BoundaryDisplacementPoint<2>>
     boundary_displacements(const Mapping<2> &,
                            const DoFHandler<2> &,
@@ -105,5 +149,17 @@ namespace Common
                            const TrilinosWrappers::MPI::Vector &,
                            const types::boundary_id,
                            const unsigned int);
+    template Tensor<1, 2>
+    displacement_at(const Mapping<2> &,
+                    const DoFHandler<2> &,
+                    const TrilinosWrappers::MPI::Vector &,
+                    const Point<2> &,
+                    const std::string &);
+    template Tensor<1, 3>
+    displacement_at(const Mapping<3> &,
+                    const DoFHandler<3> &,
+                    const TrilinosWrappers::MPI::Vector &,
+                    const Point<3> &,
+                    const std::string &);
   } // namespace Physics
 } // namespace Common

@@ -6,8 +6,10 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
+#include <string>
 
 namespace Common
 {
@@ -154,6 +156,74 @@ namespace Common
 
 
 
+    template <int dim>
+    void
+    PrescribedTranslation<dim>::prescribe(
+      const Tensor<1, dim>                      &translation,
+      std::map<types::global_dof_index, double> &values) const
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        for (const auto dof : dofs[c])
+          values[dof] = translation[c];
+    }
+
+
+
+    template <int dim>
+    PrescribedTranslation<dim>
+    add_prescribed_translation_constraints(
+      const DoFHandler<dim>     &dof_handler,
+      const types::material_id   body,
+      AffineConstraints<double> &constraints)
+    {
+      const FiniteElement<dim> &fe = dof_handler.get_fe();
+      AssertThrow(fe.n_components() == dim,
+                  ExcMessage("Prescribed body: the element must have one "
+                             "component per displacement component."));
+      PrescribedTranslation<dim> result;
+      result.reference_node_dofs.fill(numbers::invalid_dof_index);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->material_id() == body)
+          {
+            if (result.reference_node_dofs[0] == numbers::invalid_dof_index)
+              for (unsigned int c = 0; c < dim; ++c)
+                result.reference_node_dofs[c] = cell->vertex_dof_index(0, c);
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              {
+                const auto dof = dof_indices[i];
+                result.dofs[fe.system_to_component_index(i).first].push_back(
+                  dof);
+                if (constraints.can_store_line(dof) &&
+                    !constraints.is_constrained(dof))
+                  constraints.add_line(dof);
+              }
+          }
+      AssertThrow(result.reference_node_dofs[0] != numbers::invalid_dof_index,
+                  ExcMessage("Prescribed body: no cell has material id " +
+                             std::to_string(body) + "."));
+      for (auto &component : result.dofs)
+        {
+          std::sort(component.begin(), component.end());
+          component.erase(std::unique(component.begin(), component.end()),
+                          component.end());
+        }
+      return result;
+    }
+
+
+
+    template struct PrescribedTranslation<2>;
+    template struct PrescribedTranslation<3>;
+    template PrescribedTranslation<2>
+    add_prescribed_translation_constraints(const DoFHandler<2> &,
+                                           const types::material_id,
+                                           AffineConstraints<double> &);
+    template PrescribedTranslation<3>
+    add_prescribed_translation_constraints(const DoFHandler<3> &,
+                                           const types::material_id,
+                                           AffineConstraints<double> &);
     template std::vector<types::global_dof_index>
     add_rigid_translation_constraints(const DoFHandler<2> &,
                                       const types::material_id,

@@ -229,6 +229,10 @@ namespace Common
             constraints_dirichlet_and_hanging_nodes
               .set_inhomogeneity(line.index, line.inhomogeneity);
           }
+      for (const auto dof : held_dofs)
+        if (locally_relevant_dofs.is_element(dof) &&
+            !constraints_dirichlet_and_hanging_nodes.is_constrained(dof))
+          constraints_dirichlet_and_hanging_nodes.add_line(dof);
       constraints_dirichlet_and_hanging_nodes.close();
 
       solution.reinit(locally_owned_dofs,
@@ -238,6 +242,9 @@ namespace Common
       residual_vector.reinit(locally_owned_dofs,
                              locally_relevant_dofs,
                              mpi_communicator);
+      linearized_residual.reinit(locally_owned_dofs,
+                                 locally_relevant_dofs,
+                                 mpi_communicator);
       if (geometry.is_current_configuration())
         accepted_ghosted.reinit(locally_owned_dofs,
                                 locally_relevant_dofs,
@@ -414,6 +421,34 @@ namespace Common
       linear_solver.solve(system_matrix, newton_update, system_rhs, tolerance);
       constraints.distribute(newton_update);
       solve_times.linear_solve += IO::seconds_since(solve_start);
+
+      // The linearised bulk residual at the new iterate, r(u) + r'(u) du,
+      // by a difference quotient along du (one residual evaluation). The
+      // probe moves the nodes by 1e-8 of the displacement (at least of
+      // 1e-3 mm), whatever the size of du: its nonlinear error is of order
+      // 1e-8 |du| and its round-off of order 1e-8 |r| |du| / |u|, both of
+      // which vanish with the Newton step.
+      const double update_size = newton_update.linfty_norm();
+      if (uses_linearized_tractions() && update_size > 0.)
+        {
+          const auto   residual_start = std::chrono::steady_clock::now();
+          const double epsilon =
+            1e-8 * std::max(solution_owned.linfty_norm(), 1e-3) / update_size;
+          const TrilinosWrappers::MPI::Vector r_now =
+            bulk_residual_at(solution, state, load);
+          TrilinosWrappers::MPI::Vector probe = solution_owned;
+          probe.add(epsilon, newton_update);
+          TrilinosWrappers::MPI::Vector probe_ghosted(solution);
+          probe_ghosted = probe;
+          TrilinosWrappers::MPI::Vector r_probe =
+            bulk_residual_at(probe_ghosted, state, load);
+          r_probe.add(-1., r_now);
+          r_probe *= 1. / epsilon;
+          r_probe.add(1., r_now);
+          linearized_residual         = r_probe;
+          linearized_residual_current = true;
+          solve_times.residual += IO::seconds_since(residual_start);
+        }
       solution_owned += newton_update;
       solution = solution_owned;
       // A nonlinear solid's tangent belongs to the new state.
@@ -474,10 +509,23 @@ namespace Common
 
 
     template <int dim>
+    bool
+    ContactNewtonProblem<dim>::uses_linearized_tractions() const
+    {
+      return contact_parameters.enforcement ==
+               Contact::Enforcement::lagrange_multiplier &&
+             (!solid_operator.is_linear() ||
+              geometry.is_current_configuration());
+    }
+
+
+
+    template <int dim>
     TrilinosWrappers::MPI::Vector
-    ContactNewtonProblem<dim>::compute_bulk_residual(
-      const Solvers::LoadState &state,
-      const ExternalLoad       &load)
+    ContactNewtonProblem<dim>::bulk_residual_at(
+      const TrilinosWrappers::MPI::Vector &u,
+      const Solvers::LoadState            &state,
+      const ExternalLoad                  &load)
     {
       // f_ext - f_int condensed as the linear system is: hanging-node
       // forces on their parents (a secondary node may be one), Dirichlet
@@ -486,13 +534,25 @@ namespace Common
       solid_operator.assemble_internal_force(
         dof_handler,
         constraints_dirichlet_and_hanging_nodes,
-        solution,
+        u,
         r);
       r.compress(VectorOperation::add);
       r *= -1.;
       load.add(state, constraints_dirichlet_and_hanging_nodes, r);
       r.compress(VectorOperation::add);
-      residual_vector = r;
+      return r;
+    }
+
+
+
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    ContactNewtonProblem<dim>::compute_bulk_residual(
+      const Solvers::LoadState &state,
+      const ExternalLoad       &load)
+    {
+      TrilinosWrappers::MPI::Vector r = bulk_residual_at(solution, state, load);
+      residual_vector                 = r;
       return r;
     }
 
@@ -514,6 +574,11 @@ namespace Common
       TrilinosWrappers::MPI::Vector r = compute_bulk_residual(state, load);
 
       contact_enforcement->update_pressures(solution, residual_vector);
+      // After a Newton update of a nonlinear problem, a closed node opens
+      // only if the multiplier of the linearised step is tensile too.
+      if (linearized_residual_current)
+        contact_enforcement->keep_linearized_compression(linearized_residual);
+      linearized_residual_current = false;
       contact_enforcement->add_contact_forces(
         constraints_dirichlet_and_hanging_nodes,
         locally_owned_dofs,
@@ -626,6 +691,27 @@ namespace Common
       bulk_matrix_current = bulk_matrix_current && solid_operator.is_linear();
       solid_operator.restore();
       contact_enforcement->restore();
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::hold_dofs(
+      const std::vector<types::global_dof_index> &dofs)
+    {
+      const auto &surface = geometry.coupling().secondary_surface();
+      for (unsigned int j = 0; j < surface.n_nodes(); ++j)
+        for (const auto dof : surface.node(j).dofs)
+          AssertThrow(std::find(dofs.begin(), dofs.end(), dof) == dofs.end(),
+                      ExcMessage("A held DoF belongs to a node of the "
+                                 "secondary contact surface."));
+      held_dofs.insert(held_dofs.end(), dofs.begin(), dofs.end());
+      // The direct solver refers to the matrix it factorised, and the bulk
+      // tangent is condensed with the new constraints.
+      linear_solver.reset();
+      setup_stored_dofs(*base_constraints);
+      setup_matrices();
     }
 
 

@@ -73,7 +73,11 @@ namespace Common
        * a multiplier (positive weight; e.g. a sphere that touches at the
        * axis node of an axisymmetric Q2 mesh, which has no ring measure),
        * the paired node of positive weight with the smallest gap closes
-       * too; the iteration opens it if it carries no pressure. Resets
+       * too; the iteration opens it if it carries no pressure. With
+       * "Initial active set = nearest per body" only the paired node of
+       * positive weight nearest to each primary body closes
+       * (NodeKinematics::partner; the first in the surface's order on
+       * ties). Resets
        * @p state (ContactState::reset()); sets the nodes this rank holds
        * (collective).
        */
@@ -184,6 +188,7 @@ namespace Common
       const double                  tangential_ncp_factor;
       const double                  reference_modulus;
       const bool                    accelerate_release;
+      const InitialActiveSet        initial_active_set;
       std::vector<std::vector<int>> history;
       bool                          cycling;
       bool                          last_update_extrapolated;

@@ -260,6 +260,20 @@ namespace Common
       update_pressures(const VectorType &u, const VectorType &bulk_residual);
 
       /**
+       * @brief Lagrange multipliers only: where the pressure recovered by
+       * update_pressures() at a closed node is tensile, but the multiplier
+       * of the linearised Newton step, \f$n_j\cdot r^{lin}_j/D_j\f$ with
+       * @p linearized_residual = r(u_k) + r'(u_k) du (N, ghosted), is
+       * larger, take the latter. The residual at a new iterate also holds
+       * the step's nonlinear error, which is no contact traction; on a
+       * slender body held at a few nodes by small forces it would open a
+       * supporting node. A node then opens only if both say tension; the
+       * two agree at convergence.
+       */
+      void
+      keep_linearized_compression(const VectorType &linearized_residual);
+
+      /**
        * @brief Add the contact forces of the nodal tractions
        * \f$-\lambda_j n_j + t_j\f$ (pressure and tangential traction) to
        * @p residual (N): \f$D_j\f$ times the traction on secondary node j,

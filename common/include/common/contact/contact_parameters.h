@@ -46,6 +46,17 @@ namespace Common
       current
     };
 
+    /** Values of the parameter "Initial active set" in subsection
+     * "Contact". */
+    enum class InitialActiveSet
+    {
+      /** Every paired node that touches its partner is closed. */
+      touching,
+      /** Per primary body (each rigid tool; a meshed primary surface is
+       * one body), only the paired node nearest to it is closed. */
+      nearest_per_body
+    };
+
     /**
      * @brief One contact pair: a primary (projection target) and a secondary
      * (integration and multiplier) surface, with its enforcement.
@@ -99,6 +110,8 @@ namespace Common
       bool accelerate_release;
       /** Where the mortar rows are integrated. */
       ContactConfiguration configuration = ContactConfiguration::automatic;
+      /** Which nodes the first active set closes (iteration path only). */
+      InitialActiveSet initial_active_set = InitialActiveSet::touching;
     };
   } // namespace Contact
 } // namespace Common

@@ -70,6 +70,10 @@ namespace Common
       double nodal_gap = std::numeric_limits<double>::infinity();
       /** Position of the node (mm). */
       dealii::Point<dim> position;
+      /** The primary body the node is paired with: for rigid tools the
+       * first DoF of the reference node of the tool that carries most of
+       * its mortar weight; 0 for a meshed primary surface (one body). */
+      dealii::types::global_dof_index partner = 0;
       /** Weighted gap \f$\tilde g_j\f$ (D_j times mm); 0 for an unpaired
        * node. The normal gap is weighted_gap / weight (mm). */
       double weighted_gap = 0.;

@@ -292,6 +292,11 @@ namespace Common
       const ContactSurface<dim> &
       primary_surface() const;
 
+      /** @brief True if the primary side of the last reinit() is a set of
+       * rigid surfaces (each primary node is a surface's reference node). */
+      bool
+      primary_is_rigid() const;
+
       /** @brief Number of primary nodes. */
       unsigned int
       n_primary_nodes() const;

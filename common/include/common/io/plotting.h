@@ -43,6 +43,10 @@ namespace Common
       std::string x_range;
       /** Log-log axes. */
       bool log_log = false;
+      /** Optional y range "[ymin:ymax]"; empty for automatic. */
+      std::string y_range;
+      /** One unit of x as long as one unit of y on the page (shapes). */
+      bool equal_axes = false;
     };
 
     /**

@@ -2,7 +2,8 @@
  * @file boundary_displacement.h
  * The displacement field along a boundary, sampled at the finite element's
  * support points: the surface profiles that benchmark reports compare
- * with reference curves (u_r and u_z of a foundation top, for example).
+ * with reference curves (u_r and u_z of a foundation top, for example);
+ * and the displacement of one material point.
  */
 #ifndef common_physics_boundary_displacement_h
 #define common_physics_boundary_displacement_h
@@ -15,6 +16,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <string>
 #include <vector>
 
 namespace Common
@@ -58,6 +60,24 @@ namespace Common
                            const dealii::TrilinosWrappers::MPI::Vector &u,
                            const dealii::types::boundary_id boundary_id,
                            const unsigned int sort_coordinate = 0);
+
+    /**
+     * @brief The displacement @p u of the material point at @p point of the
+     * reference configuration (mm), evaluated with the finite element on
+     * the cell that holds it (its reference shape given by @p mapping).
+     * Every process finds the same cell (shared triangulations hold every
+     * cell); its owner evaluates, and the result is the same on every
+     * process. @p u must be readable at the DoFs of the locally owned
+     * cells. Throws "No cell holds <what>." if the point lies outside
+     * the mesh.
+     */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    displacement_at(const dealii::Mapping<dim>                  &mapping,
+                    const dealii::DoFHandler<dim>               &dof_handler,
+                    const dealii::TrilinosWrappers::MPI::Vector &u,
+                    const dealii::Point<dim>                    &point,
+                    const std::string                           &what);
   } // namespace Physics
 } // namespace Common
 

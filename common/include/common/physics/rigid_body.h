@@ -19,6 +19,8 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <array>
+#include <map>
 #include <vector>
 
 namespace Common
@@ -55,6 +57,45 @@ namespace Common
       const dealii::types::material_id   body,
       const dealii::Point<dim>          &reference_point,
       const dealii::ComponentMask       &fixed_components,
+      dealii::AffineConstraints<double> &constraints);
+
+    /**
+     * @brief A body whose every displacement is prescribed as one
+     * translation: the carrier of a rigid tool (a RigidTool's reference
+     * node), a cell apart from the scene that moves as the load program
+     * says.
+     */
+    template <int dim>
+    struct PrescribedTranslation
+    {
+      /** DoFs of the body's first vertex, one per component: a tool's
+       * reference node. */
+      std::array<dealii::types::global_dof_index, dim> reference_node_dofs;
+      /** Every DoF of the body, by component. */
+      std::array<std::vector<dealii::types::global_dof_index>, dim> dofs;
+
+      /** @brief Set the displacement of every DoF of the body to
+       * @p translation (mm) in @p values. */
+      void
+      prescribe(
+        const dealii::Tensor<1, dim>                      &translation,
+        std::map<dealii::types::global_dof_index, double> &values) const;
+    };
+
+    /**
+     * @brief Give every DoF of the body of material id @p body a
+     * homogeneous Dirichlet line in @p constraints (not closed), so that
+     * the body moves only by the displacements an ExternalLoad prescribes
+     * (PrescribedTranslation::prescribe()). Every cell of the body must be
+     * known on this process (serial or parallel::shared triangulations);
+     * lines that @p constraints cannot store are skipped. Throws if no cell
+     * has the material id.
+     */
+    template <int dim>
+    PrescribedTranslation<dim>
+    add_prescribed_translation_constraints(
+      const dealii::DoFHandler<dim>     &dof_handler,
+      const dealii::types::material_id   body,
       dealii::AffineConstraints<double> &constraints);
 
     /**

@@ -162,6 +162,19 @@ namespace Common
       restore();
 
       /**
+       * @brief Support the DoFs @p dofs where they are now, from the next
+       * solve on: homogeneous Dirichlet constraints on their Newton
+       * increments join those given to setup(), so their displacement keeps
+       * its current value. This is a support that a stage of a load program
+       * adds, e.g. to hold a body that the tools release. The sparsity
+       * pattern is kept. No DoF may belong to a node of the secondary
+       * surface, whose contact constraints would conflict (throws). Every
+       * rank passes the same list.
+       */
+      void
+      hold_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
+
+      /**
        * @brief Processor time of one assembly (cell matrices included) and
        * one solve with the current active set held fixed, the least any
        * contact solver must pay: the median of @p n_repeats measurements.
@@ -268,6 +281,24 @@ namespace Common
       evaluate_residual(const Solvers::LoadState &state,
                         const ExternalLoad       &load);
 
+      /** True if the problem is nonlinear (a nonlinear solid or contact in
+       * the current configuration) and enforced by Lagrange multipliers:
+       * after each Newton update the linearised bulk residual
+       * r(u_k) + r'(u_k) du is formed, and a closed node opens only if the
+       * multiplier of that linearised step is tensile as well as the one
+       * recovered from the residual at the new iterate
+       * (ContactEnforcement::keep_linearized_compression()). For a linear
+       * problem the two are the same. */
+      bool
+      uses_linearized_tractions() const;
+
+      /** f_ext - f_int at the displacement @p u (ghosted), condensed as in
+       * compute_bulk_residual(); a compressed owned vector. */
+      dealii::TrilinosWrappers::MPI::Vector
+      bulk_residual_at(const dealii::TrilinosWrappers::MPI::Vector &u,
+                       const Solvers::LoadState                    &state,
+                       const ExternalLoad                          &load);
+
       /** f_ext - f_int at the current state, condensed with the Dirichlet
        * and hanging-node constraints (N): stored, ghosted, in
        * residual_vector and returned as a compressed owned vector. */
@@ -302,6 +333,8 @@ namespace Common
       dealii::IndexSet  locally_relevant_dofs;
 
       const dealii::AffineConstraints<double> *base_constraints = nullptr;
+      /** DoFs supported by hold_dofs(), in addition to base_constraints. */
+      std::vector<dealii::types::global_dof_index>      held_dofs;
       std::unique_ptr<Contact::ContactEnforcement<dim>> contact_enforcement;
 
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
@@ -318,6 +351,13 @@ namespace Common
       dealii::TrilinosWrappers::MPI::Vector newton_update;
       dealii::TrilinosWrappers::MPI::Vector system_rhs;
       dealii::TrilinosWrappers::MPI::Vector residual_vector;
+      /** The bulk residual of the linearised problem at the new iterate,
+       * r(u) + r'(u) du, readable where residual_vector is
+       * (uses_linearized_tractions()). */
+      dealii::TrilinosWrappers::MPI::Vector linearized_residual;
+      /** True from a Newton update until the residual of the new iterate
+       * has used linearized_residual. */
+      bool linearized_residual_current = false;
       // Declared after the matrix: Amesos refers to it when destroyed.
       Solvers::LinearSolver linear_solver;
 
