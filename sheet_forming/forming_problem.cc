@@ -1,0 +1,354 @@
+/*
+ * Benchmark 3 of the FENET/NAFEMS advanced contact benchmarks: mesh,
+ * tools, boundary conditions, load program and the per-step record; see
+ * README.md.
+ */
+#include "forming_problem.h"
+
+#include <common/geometry/two_body_meshes.h>
+#include <common/physics/boundary_conditions.h>
+#include <common/physics/boundary_displacement.h>
+#include <common/physics/solid_model.h>
+#include <common/problems/contact_run.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+namespace SheetForming
+{
+  FormingProblem::FormingProblem(const Parameters &parameters)
+    : Base(parameters, parameters.mesh.element_degree, "sheet_forming")
+    , parameters(parameters)
+    , hold_dof(numbers::invalid_dof_index)
+  {}
+
+
+
+  std::string
+  FormingProblem::title() const
+  {
+    return "sheet_forming: aluminium strip bent by a rigid punch into a "
+           "rigid die, then released (plane strain half model)";
+  }
+
+
+
+  std::vector<std::string>
+  FormingProblem::result_files() const
+  {
+    std::vector<std::string> files = {"punch_force.csv",
+                                      "punch_force.png",
+                                      "punch_force.gp"};
+    for (const std::string tag : {"formed", "released"})
+      for (const std::string file : {"strip_TAG.csv",
+                                     "tools_TAG.csv",
+                                     "contact_TAG_top.csv",
+                                     "contact_TAG_bottom.csv",
+                                     "shape_TAG.png",
+                                     "shape_TAG.gp",
+                                     "contact_TAG_pressure.png",
+                                     "contact_TAG_pressure.gp",
+                                     "contact_TAG_slip.png",
+                                     "contact_TAG_slip.gp"})
+        files.push_back(std::regex_replace(file, std::regex("TAG"), tag));
+    return files;
+  }
+
+
+
+  // The sheet 0 <= x <= L/2, 0 <= y <= t, and one carrier cell per tool
+  // apart from it: the carriers' nodes are the tools' reference nodes.
+  void
+  FormingProblem::make_grid()
+  {
+    const auto        &g = parameters.geometry;
+    Triangulation<dim> sheet, punch, die;
+    GridGenerator::subdivided_hyper_rectangle(
+      sheet,
+      {parameters.mesh.n_cells_length, parameters.mesh.n_cells_thickness},
+      Point<dim>(0., 0.),
+      Point<dim>(g.sheet_half_length, g.thickness));
+    const double tolerance = 1e-8 * g.thickness;
+    for (const auto &cell : sheet.active_cell_iterators())
+      {
+        cell->set_material_id(MaterialIds::sheet);
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const auto c = face->center();
+              face->set_boundary_id(
+                std::abs(c[0]) < tolerance ? BoundaryIds::symmetry :
+                std::abs(c[0] - g.sheet_half_length) < tolerance ?
+                                             BoundaryIds::end :
+                                             BoundaryIds::surface);
+            }
+      }
+    // Carriers left of the axis, clear of the sheet and the tools' paths.
+    const double size = g.thickness;
+    GridGenerator::hyper_rectangle(punch,
+                                   Point<dim>(-g.die_radius - 10., 10.),
+                                   Point<dim>(-g.die_radius - 10. + size,
+                                              10. + size));
+    GridGenerator::hyper_rectangle(die,
+                                   Point<dim>(-g.die_radius - 10., -10.),
+                                   Point<dim>(-g.die_radius - 10. + size,
+                                              -10. + size));
+    for (const auto &cell : punch.active_cell_iterators())
+      cell->set_material_id(MaterialIds::punch_carrier);
+    for (const auto &cell : die.active_cell_iterators())
+      cell->set_material_id(MaterialIds::die_carrier);
+    Common::Geometry::join_bodies<dim>({&sheet, &punch, &die}, triangulation);
+  }
+
+
+
+  // The punch: a circle of radius Rp about (0, t + Rp), touching the
+  // sheet's top on the axis, continued upward by its vertical side. The
+  // die, material below: the flat top y = 0 from outside the sheet's end,
+  // the shoulder fillet about (R2 + R3, -R3) and the cavity about
+  // (0, -R3). Both arcs reach a little past the axis. A profile keeps its
+  // body on its left.
+  std::vector<Common::Contact::RigidTool<FormingProblem::dim>>
+  FormingProblem::make_tools() const
+  {
+    const auto    &g    = parameters.geometry;
+    const double   pi   = numbers::PI;
+    const double   past = 0.2; // rad past the axis
+    const double   Rp   = g.punch_radius;
+    const double   R2   = g.die_radius;
+    const double   R3   = g.shoulder_radius;
+    const double   xs   = g.shoulder_centre_x();
+    const double   t    = g.thickness;
+    const Point<2> punch_centre(0., t + Rp);
+
+    Common::Contact::RigidProfile punch;
+    punch.add_arc(punch_centre, Rp, -0.5 * pi - past, 0.);
+    punch.add_line(Point<2>(Rp, t + Rp), Point<2>(Rp, t + 3. * Rp));
+
+    Common::Contact::RigidProfile die;
+    die.add_line(Point<2>(g.sheet_half_length + 2. * R2, 0.), Point<2>(xs, 0.));
+    die.add_arc(Point<2>(xs, -R3), R3, 0.5 * pi, pi);
+    die.add_arc(Point<2>(0., -R3), R2, 0., -0.5 * pi - past);
+
+    std::vector<Common::Contact::RigidTool<dim>> tools(2);
+    tools[0].name = "punch";
+    tools[0].surface =
+      std::make_shared<const Common::Contact::RigidSurface<dim>>(punch);
+    tools[0].reference_node_dofs = punch_carrier.reference_node_dofs;
+    tools[0].centre              = punch_centre;
+    tools[1].name                = "die";
+    tools[1].surface =
+      std::make_shared<const Common::Contact::RigidSurface<dim>>(die);
+    tools[1].reference_node_dofs = die_carrier.reference_node_dofs;
+    tools[1].centre              = Point<dim>(0., -R3);
+    return tools;
+  }
+
+
+
+  void
+  FormingProblem::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    // u_x = 0 on the symmetry plane; the tools' carriers move as the load
+    // program prescribes. Nothing else holds the sheet.
+    Common::Physics::make_homogeneous_constraints<dim>(
+      mapping,
+      dof_handler,
+      {},
+      {{0, {BoundaryIds::symmetry}}},
+      constraints_dirichlet_and_hanging_nodes);
+    punch_carrier = Common::Physics::add_prescribed_translation_constraints(
+      dof_handler,
+      MaterialIds::punch_carrier,
+      constraints_dirichlet_and_hanging_nodes);
+    die_carrier = Common::Physics::add_prescribed_translation_constraints(
+      dof_handler,
+      MaterialIds::die_carrier,
+      constraints_dirichlet_and_hanging_nodes);
+
+    // The node held by the release: on the axis, nearest the mid-plane
+    // (not a contact node).
+    const auto  &g = parameters.geometry;
+    const double h = g.thickness / (parameters.mesh.n_cells_thickness *
+                                    parameters.mesh.element_degree);
+    const double y_hold =
+      std::max(h,
+               std::min(g.thickness - h,
+                        h * std::round(0.5 * g.thickness / h)));
+    hold_dof = numbers::invalid_dof_index;
+    {
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      const Point<dim>                     target(0., y_hold);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->material_id() == MaterialIds::sheet &&
+            cell->center()[0] <
+              g.sheet_half_length / parameters.mesh.n_cells_length)
+          {
+            const auto &points = fe.get_unit_support_points();
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe.system_to_component_index(i).first == 1 &&
+                  mapping.transform_unit_to_real_cell(cell, points[i])
+                      .distance(target) < 1e-8 * g.thickness)
+                hold_dof = dofs[i];
+          }
+      AssertThrow(hold_dof != numbers::invalid_dof_index,
+                  ExcMessage("No node on the axis at mid-thickness."));
+    }
+
+    const double E = parameters.sheet_material.youngs_modulus;
+    setup_contact_problem(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
+        mapping,
+        fe,
+        {{MaterialIds::sheet, parameters.sheet_material},
+         {MaterialIds::punch_carrier, parameters.sheet_material},
+         {MaterialIds::die_carrier, parameters.sheet_material}}),
+      std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+        dof_handler,
+        mapping,
+        BoundaryIds::surface,
+        make_tools(),
+        parameters.contact.search_distance,
+        false),
+      E);
+  }
+
+
+
+  // No applied forces: the tools move. The scale of the residuals is the
+  // force per unit depth that strains the sheet's section by 1e-3.
+  Common::Problems::ExternalLoad
+  FormingProblem::external_load() const
+  {
+    Common::Problems::ExternalLoad load;
+    load.add = [](const Common::Solvers::LoadState &,
+                  const AffineConstraints<double> &,
+                  TrilinosWrappers::MPI::Vector &) {
+    };
+    const double scale = 1e-3 * parameters.sheet_material.youngs_modulus *
+                         parameters.geometry.thickness;
+    load.magnitude = [scale](const Common::Solvers::LoadState &) {
+      return scale;
+    };
+    load.prescribed_displacements =
+      [this](const Common::Solvers::LoadState          &state,
+             std::map<types::global_dof_index, double> &values) {
+        punch_carrier.prescribe(Tensor<1, dim>(
+                                  {0., -state.value("Punch displacement")}),
+                                values);
+        die_carrier.prescribe(Tensor<1, dim>(
+                                {0., -state.value("Die displacement")}),
+                              values);
+      };
+    return load;
+  }
+
+
+
+  Point<FormingProblem::dim>
+  FormingProblem::deformed_point(const double s, const double y) const
+  {
+    const Point<dim> X(s, y);
+    return X + Common::Physics::displacement_at(mapping,
+                                                dof_handler,
+                                                contact_problem->displacement(),
+                                                X,
+                                                "a point of the sheet");
+  }
+
+
+
+  FlangeAngles
+  FormingProblem::flange_angles() const
+  {
+    const auto  &g     = parameters.geometry;
+    const double L     = g.sheet_half_length;
+    const double mid   = 0.5 * g.thickness;
+    const auto   end   = deformed_point(L, mid);
+    const auto   angle = [&](const Point<dim> &start) {
+      const Tensor<1, dim> d = end - start;
+      return std::atan2(std::abs(d[0]), d[1]) * 180. / numbers::PI;
+    };
+    FlangeAngles result;
+    result.chord = angle(deformed_point(parameters.release.chord_start, mid));
+    result.end_tangent =
+      angle(deformed_point(L - parameters.release.end_tangent_length, mid));
+    return result;
+  }
+
+
+
+  void
+  FormingProblem::postprocess_step(
+    const Common::Solvers::StepInfo         &step,
+    const Common::Solvers::NewtonStatistics &statistics)
+  {
+    Common::Problems::print_step(console, step, statistics, *contact_problem);
+
+    // Forces of the sheet on the tools, and the support's reaction on the
+    // sheet at the held node (the only vertical support): the sheet is in
+    // equilibrium if they balance.
+    const auto &geometry =
+      static_cast<const Common::Contact::CurrentMortarGeometry<dim> &>(
+        *contact_geometry);
+    const auto loads =
+      geometry.tool_loads(contact_problem->enforcement().state(),
+                          dof_handler.locally_owned_dofs(),
+                          mpi_communicator);
+    const double full = 2. * parameters.geometry.width;
+    ForceRecord  record;
+    record.time               = step.state.time;
+    record.punch_displacement = step.state.value("Punch displacement");
+    record.die_displacement   = step.state.value("Die displacement");
+    record.punch_force        = full * loads[0].force[1];
+    record.die_force          = full * loads[1].force[1];
+    record.hold_force =
+      full * contact_problem->reaction_forces({BoundaryIds::symmetry},
+                                              step.state,
+                                              external_load())[0][1];
+    const double largest = std::max({std::abs(record.punch_force),
+                                     std::abs(record.die_force),
+                                     std::abs(record.hold_force)});
+    record.balance =
+      largest > 0. ?
+        std::abs(record.punch_force + record.die_force - record.hold_force) /
+          largest :
+        0.;
+    forces.push_back(record);
+
+    console.print_quantity("Punch displacement",
+                           "mm",
+                           record.punch_displacement);
+    console.print_quantity("Punch force (full strip)", "N", record.punch_force);
+    console.print_quantity("Die force (full strip)", "N", record.die_force);
+    if (held)
+      console.print_quantity("Held node reaction", "N", record.hold_force);
+    const FlangeAngles angles = flange_angles();
+    console.print_quantity("Flange angle (chord)", "deg", angles.chord);
+
+    // The end of forming: keep the formed state's angles and shape, then
+    // hold the axis node for the release.
+    const unsigned int release = parameters.release.release_stage;
+    if (release > 0 && !formed &&
+        std::abs(step.state.time - (release - 1.)) < 1e-9)
+      {
+        formed         = true;
+        forming_angles = angles;
+        stroke         = record.punch_displacement;
+        formed_shape   = capture_shape();
+        contact_problem->hold_dofs({hold_dof});
+        held = true;
+        console.stream() << "  Forming ends: the sheet's axis node at "
+                            "mid-thickness is held for the release."
+                         << std::endl;
+      }
+    Common::Problems::warn_if_search_edge_reached(console, *contact_problem);
+  }
+} // namespace SheetForming

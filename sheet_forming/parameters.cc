@@ -1,0 +1,267 @@
+#include "parameters.h"
+
+#include <cmath>
+
+namespace SheetForming
+{
+  namespace
+  {
+    /** Read a length entry that must be positive. */
+    double
+    positive_length(ParameterHandler  &prm,
+                    const std::string &subsection,
+                    const std::string &entry)
+    {
+      const double value = prm.get_double(entry);
+      AssertThrow(value > 0. && std::isfinite(value),
+                  ExcMessage(subsection + ": '" + entry +
+                             "' must be positive (mm)."));
+      return value;
+    }
+  } // namespace
+
+
+
+  double
+  GeometryParameters::shoulder_centre_x() const
+  {
+    return die_radius + shoulder_radius;
+  }
+
+
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Punch radius",
+                        "23.5",
+                        Patterns::Double(),
+                        "Radius Rp of the cylindrical punch; its lowest "
+                        "point touches the sheet's top at the start. "
+                        "Units: mm.");
+      prm.declare_entry("Die radius",
+                        "25",
+                        Patterns::Double(),
+                        "Radius R2 of the die's half-cylindrical cavity, "
+                        "centred on the axis at the depth of the shoulder "
+                        "centres, y = -R3; at least the punch radius plus "
+                        "the sheet thickness. Units: mm.");
+      prm.declare_entry("Die shoulder radius",
+                        "4",
+                        Patterns::Double(),
+                        "Radius R3 of the die's shoulder fillet, centred at "
+                        "(R2 + R3, -R3), joining the cavity to the flat "
+                        "top y = 0. Units: mm.");
+      prm.declare_entry("Sheet half-length",
+                        "60",
+                        Patterns::Double(),
+                        "Half the sheet's length, the modelled part "
+                        "0 <= x <= L/2 (half model); larger than R2 + R3, "
+                        "so that the sheet rests on the die's flat top. "
+                        "Units: mm.");
+      prm.declare_entry("Sheet thickness",
+                        "1",
+                        Patterns::Double(),
+                        "Thickness of the sheet, 0 <= y <= t. Units: mm.");
+      prm.declare_entry("Sheet width",
+                        "30",
+                        Patterns::Double(),
+                        "Width of the full strip, the depth of the plane "
+                        "strain model: forces are reported for the full "
+                        "strip, 2 x width x the force per unit depth of the "
+                        "half model. Units: mm.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string s = "Geometry";
+    prm.enter_subsection(s);
+    {
+      punch_radius      = positive_length(prm, s, "Punch radius");
+      die_radius        = positive_length(prm, s, "Die radius");
+      shoulder_radius   = positive_length(prm, s, "Die shoulder radius");
+      sheet_half_length = positive_length(prm, s, "Sheet half-length");
+      thickness         = positive_length(prm, s, "Sheet thickness");
+      width             = positive_length(prm, s, "Sheet width");
+    }
+    prm.leave_subsection();
+    AssertThrow(die_radius >= punch_radius + thickness,
+                ExcMessage("Geometry: the sheet does not fit between punch "
+                           "and die: 'Die radius' must be at least 'Punch "
+                           "radius' plus 'Sheet thickness'."));
+    AssertThrow(sheet_half_length > shoulder_centre_x(),
+                ExcMessage("Geometry: 'Sheet half-length' must exceed 'Die "
+                           "radius' plus 'Die shoulder radius', so that "
+                           "the sheet rests on the die's flat top."));
+  }
+
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Element degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Degree of the Lagrange element: 1 (with 'Element "
+                        "technology = F-bar' the benchmark's 4-node "
+                        "element) or 2.");
+      prm.declare_entry("Number of cells through the thickness",
+                        "4",
+                        Patterns::Integer(1, 32),
+                        "Cells through the sheet's thickness (uniform).");
+      prm.declare_entry("Number of cells along the length",
+                        "120",
+                        Patterns::Integer(4, 4000),
+                        "Cells along the sheet's half-length (uniform).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      element_degree = prm.get_integer("Element degree");
+      n_cells_thickness =
+        prm.get_integer("Number of cells through the thickness");
+      n_cells_length = prm.get_integer("Number of cells along the length");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ReleaseParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Release");
+    {
+      prm.declare_entry("Release stage",
+                        "2",
+                        Patterns::Integer(0, 6),
+                        "First stage of the load program (from 1) that "
+                        "releases the sheet: from its start the sheet's "
+                        "mid-thickness node on the axis is held where it "
+                        "is (it removes the vertical rigid-body motion "
+                        "once the tools let go; the released, tool-free "
+                        "state carries no load there). The forming angle "
+                        "is measured at the end of the stage before it, "
+                        "the angle after release at the end of the "
+                        "program. 0: the program only forms (the angles "
+                        "are measured at its end).");
+      prm.declare_entry("Flange chord start",
+                        "50",
+                        Patterns::Double(),
+                        "Reference arc length s (the initial x) where the "
+                        "chord of the mid-surface that defines the flange "
+                        "angle starts; it ends at the sheet's end. Units: "
+                        "mm, between 0 and the half-length.");
+      prm.declare_entry("End tangent length",
+                        "1",
+                        Patterns::Double(),
+                        "Length of the sheet's end piece of the "
+                        "mid-surface whose direction gives the "
+                        "end-tangent variant of the angles. Units: mm, "
+                        "positive, at most the half-length.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ReleaseParameters::parse_parameters(ParameterHandler  &prm,
+                                      const unsigned int n_stages,
+                                      const double       sheet_half_length)
+  {
+    prm.enter_subsection("Release");
+    {
+      release_stage      = prm.get_integer("Release stage");
+      chord_start        = prm.get_double("Flange chord start");
+      end_tangent_length = prm.get_double("End tangent length");
+    }
+    prm.leave_subsection();
+    AssertThrow(release_stage == 0 ||
+                  (release_stage >= 2 && release_stage <= n_stages),
+                ExcMessage("Release: 'Release stage' must be 0 or a stage "
+                           "after the first of the load program's " +
+                           std::to_string(n_stages) + "."));
+    AssertThrow(chord_start >= 0. && chord_start < sheet_half_length,
+                ExcMessage("Release: 'Flange chord start' must lie on the "
+                           "sheet, 0 <= s < half-length (mm)."));
+    AssertThrow(end_tangent_length > 0. &&
+                  end_tangent_length <= sheet_half_length,
+                ExcMessage("Release: 'End tangent length' must be positive "
+                           "and at most the half-length (mm)."));
+  }
+
+
+
+  std::vector<Common::Solvers::LoadChannel>
+  load_channels()
+  {
+    return {{"Punch displacement",
+             "Downward displacement of the punch at the end of the stage "
+             "from its initial position, touching the sheet (the stroke: "
+             "28.5); negative lifts it above that position. Units: mm."},
+            {"Die displacement",
+             "Downward displacement of the die at the end of the stage (0 "
+             "while forming; a release lowers it). Units: mm."}};
+  }
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+    ReleaseParameters::declare_parameters(prm);
+    Common::Materials::SolidMaterialParameters::declare_parameters(
+      prm,
+      "Sheet material");
+    Common::Problems::ContactRunParameters::declare_parameters(
+      prm,
+      load_channels(),
+      {{"Punch displacement", 28.5}, {"Die displacement", 0.}});
+  }
+
+
+
+  Parameters::Parameters(const std::string &filename)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input(filename);
+
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    Common::Problems::ContactRunParameters::parse_parameters(prm,
+                                                             load_channels());
+    release.parse_parameters(prm,
+                             load_program.stages.size(),
+                             geometry.sheet_half_length);
+    AssertThrow(release.release_stage == 0 ||
+                  mesh.n_cells_thickness * mesh.element_degree >= 2,
+                ExcMessage("Mesh: the release holds a node inside the "
+                           "sheet: 'Number of cells through the thickness' "
+                           "must be at least 2 (1 with 'Element degree = "
+                           "2')."));
+    sheet_material.parse_parameters(prm,
+                                    "Sheet material",
+                                    solid.finite_strain());
+  }
+} // namespace SheetForming
