@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 
 namespace SheetForming
 {
@@ -43,17 +42,19 @@ namespace SheetForming
                                       "punch_force.png",
                                       "punch_force.gp"};
     for (const std::string tag : {"formed", "released"})
-      for (const std::string file : {"strip_TAG.csv",
-                                     "tools_TAG.csv",
-                                     "contact_TAG_top.csv",
-                                     "contact_TAG_bottom.csv",
-                                     "shape_TAG.png",
-                                     "shape_TAG.gp",
-                                     "contact_TAG_pressure.png",
-                                     "contact_TAG_pressure.gp",
-                                     "contact_TAG_slip.png",
-                                     "contact_TAG_slip.gp"})
-        files.push_back(std::regex_replace(file, std::regex("TAG"), tag));
+      for (const std::string &stem : {"strip_" + tag,
+                                      "tools_" + tag,
+                                      "contact_" + tag + "_top",
+                                      "contact_" + tag + "_bottom"})
+        files.push_back(stem + ".csv");
+    for (const std::string tag : {"formed", "released"})
+      for (const std::string &stem : {"shape_" + tag,
+                                      "contact_" + tag + "_pressure",
+                                      "contact_" + tag + "_slip"})
+        {
+          files.push_back(stem + ".png");
+          files.push_back(stem + ".gp");
+        }
     return files;
   }
 
