@@ -8,7 +8,10 @@
  * increment) as a convergence sign; it does not converge on a small step
  * while the active set changes or the complementarity residual is large,
  * nor when the step stays above its tolerance or the test is disabled; it
- * stops on a non-finite residual and on a cycling active set. With
+ * stops on a non-finite residual and on a cycling active set, unless the
+ * problem offers the one-change-per-equilibrium mode: then the cycling set
+ * is held until equilibrium, and each later update changes one point from
+ * an equilibrium until none changes. With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -82,6 +85,57 @@ namespace
     return solve_newton(parameters, callbacks, quiet);
   }
 
+  /** A problem whose active set cycles at the first iteration and that
+   * offers the one-change-per-equilibrium mode: each call is logged. The
+   * equilibrium residual follows @p equilibrium (the last entry repeats);
+   * the one-point updates change @p one_point_changes[k] points in turn. */
+  NewtonStatistics
+  run_held(const std::vector<double>       &equilibrium,
+           const std::vector<unsigned int> &one_point_changes,
+           std::vector<std::string>        &calls)
+  {
+    NonlinearSolverParameters parameters;
+    parameters.max_iterations = 12;
+    parameters.tolerance      = 1e-10;
+    parameters.step_tolerance = 0.;
+
+    unsigned int    it = 0, one_point = 0;
+    bool            cycling = false;
+    NewtonCallbacks callbacks;
+    callbacks.assemble_solve_and_update = [&](const double) {
+      ++it;
+      return 1e-3;
+    };
+    callbacks.evaluate_residual = [&]() {
+      NewtonResidual r;
+      r.equilibrium =
+        equilibrium[std::min<std::size_t>(it - 1, equilibrium.size() - 1)];
+      r.complementarity = one_point < one_point_changes.size() ? 1e-3 : 0.;
+      return r;
+    };
+    callbacks.update_active_set = [&]() {
+      calls.push_back("update");
+      cycling = true;
+      return 0u;
+    };
+    callbacks.is_cycling = [&]() {
+      return cycling;
+    };
+    callbacks.restart_cycle_detection = [&]() {
+      calls.push_back("restart");
+      cycling = false;
+    };
+    callbacks.update_one_point = [&]() {
+      const unsigned int n = one_point < one_point_changes.size() ?
+                               one_point_changes[one_point++] :
+                               0u;
+      calls.push_back("one point (" + std::to_string(n) + ")");
+      return n;
+    };
+    ConditionalOStream quiet(std::cout, false);
+    return solve_newton(parameters, callbacks, quiet);
+  }
+
   void
   report(const std::string &name, const NewtonStatistics &s)
   {
@@ -133,6 +187,29 @@ main()
   report("non-finite", run({{1., 1e-3, 1e-1, 3}, {1e-12, nan, 0, 0}}, 1e-8));
   // A cycling active set stops the loop.
   report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, 1));
+  // With the one-change-per-equilibrium mode a cycle holds the set: no
+  // update until the equilibrium residual meets the tolerance (iteration
+  // 3), then the history restarts and one point changes; held again until
+  // equilibrium (iteration 5), one more change, and so on until no point
+  // changes at an equilibrium with the complementarity met (iteration 7).
+  {
+    std::vector<std::string> calls;
+    report("cycling, one change per equilibrium",
+           run_held({1e-3, 1e-6, 1e-12, 1e-5, 1e-12, 1e-5, 1e-12},
+                    {1, 1},
+                    calls));
+    for (const auto &call : calls)
+      deallog << "  " << call << std::endl;
+  }
+  // A problem whose equilibrium never meets the tolerance stays held
+  // until the iteration limit: no update, no convergence.
+  {
+    std::vector<std::string> calls;
+    report("cycling, equilibrium not reached",
+           run_held({1e-3, 1e-6}, {1}, calls));
+    for (const auto &call : calls)
+      deallog << "  " << call << std::endl;
+  }
 
   // Inexact Newton with factor 0.1: iteration 1 solved fully, later ones
   // to 0.1 times the larger residual of the previous iteration.

@@ -151,14 +151,24 @@ namespace Common
 
     template <int dim>
     void
-    ActiveSetPolicy<dim>::begin_step(const ContactState<dim> &state)
+    ActiveSetPolicy<dim>::restart_history(const ContactState<dim> &state)
     {
       std::vector<NodeState<dim>> nodes(state.n_nodes());
       for (unsigned int j = 0; j < state.n_nodes(); ++j)
         nodes[j] = state.node(j);
       history.clear();
       history.push_back(codes(state, nodes));
-      cycling                  = false;
+      history_residual.assign(1, std::numeric_limits<double>::infinity());
+      cycling = false;
+    }
+
+
+
+    template <int dim>
+    void
+    ActiveSetPolicy<dim>::begin_step(const ContactState<dim> &state)
+    {
+      restart_history(state);
       last_update_extrapolated = false;
       extrapolation_enabled    = accelerate_release;
     }
@@ -225,8 +235,19 @@ namespace Common
     ActiveSetPolicy<dim>::update(const std::vector<NodeKinematics<dim>> &nodes,
                                  const NormalEnforcement<dim>           &normal,
                                  const FrictionModel<dim> &friction,
-                                 ContactState<dim>        &state)
+                                 ContactState<dim>        &state,
+                                 const double              residual,
+                                 const bool                one_point)
     {
+      // The current set (the last entry) produced the current iterate.
+      // An entry counts as seen unless the iteration has progressed by a
+      // decade since that use (a set used again has one entry per use).
+      if (residual >= 0.)
+        history_residual.back() = residual;
+      history_counts.assign(history.size(), true);
+      if (residual >= 0.)
+        for (unsigned int i = 0; i < history.size(); ++i)
+          history_counts[i] = !(residual < 0.1 * history_residual[i]);
       // Each rank decides the nodes it owns; counts and the safeguards
       // that look at every node are collectives, so that every rank takes
       // the same branch.
@@ -295,6 +316,21 @@ namespace Common
           proposed[j].turning_stiffness        = tangential.turning_stiffness;
         }
 
+      // On equilibria (one point at a time), a slipping node whose slip
+      // would reverse sticks first: near zero pressure the two senses
+      // trade places at every equilibrium, and the state between them is
+      // stick.
+      if (one_point)
+        for (unsigned int j = 0; j < n; ++j)
+          if (rows.is_owned(j) && current[j].status == PointStatus::slip &&
+              proposed[j].status == PointStatus::slip &&
+              current[j].slip_direction * proposed[j].slip_direction < 0.)
+            {
+              proposed[j].status            = PointStatus::stick;
+              proposed[j].slip_direction    = Tensor<1, dim>();
+              proposed[j].turning_stiffness = 0.;
+            }
+
       // A set seen before in this step means ping-pong (typically a corner
       // and a mid-side node of a Q2 face trading places at the contact
       // edge, or a node at the stick-slip boundary). Then change only the
@@ -306,7 +342,7 @@ namespace Common
       const auto             seen          = [&](const std::vector<int> &set) {
         std::vector<unsigned int> mismatch(history.size());
         for (unsigned int i = 0; i < history.size(); ++i)
-          mismatch[i] = (history[i] != set);
+          mismatch[i] = (!history_counts[i] || history[i] != set);
         if (distributed)
           Utilities::MPI::sum(mismatch, comm, mismatch);
         return std::find(mismatch.begin(), mismatch.end(), 0u) !=
@@ -317,7 +353,7 @@ namespace Common
         changed =
           Utilities::MPI::max(static_cast<unsigned int>(changed), comm) > 0;
       cycling = false;
-      if (changed && seen(next_codes))
+      if (changed && (one_point || seen(next_codes)))
         {
           extrapolation_enabled       = false;
           const unsigned int j_single = single_change(nodes,
@@ -327,7 +363,13 @@ namespace Common
                                                       current_codes,
                                                       next_codes);
           cycling = j_single == numbers::invalid_unsigned_int;
-          if (!cycling)
+          // A cycle changes nothing: the caller decides what follows.
+          if (cycling)
+            {
+              proposed   = current;
+              next_codes = current_codes;
+            }
+          else
             for (unsigned int j = 0, l = 0; j < n; ++j)
               if (rows.is_owned(j))
                 {
@@ -363,6 +405,7 @@ namespace Common
             node.turning_stiffness = proposed[j].turning_stiffness;
           }
       history.push_back(next_codes);
+      history_residual.push_back(std::numeric_limits<double>::infinity());
       return n_changed;
     }
 
@@ -401,8 +444,24 @@ namespace Common
           std::sort(all.begin(), all.end());
           opened = all;
         }
+      // Mirroring is about one contact edge: with closed nodes on several
+      // primary bodies (two rigid tools) the opened band of one body says
+      // nothing about the zone of another, and no node is added.
+      std::vector<types::global_dof_index> bodies;
+      for (const unsigned int j : kept)
+        bodies.push_back(nodes[j].partner);
+      if (distributed)
+        {
+          std::vector<types::global_dof_index> all;
+          for (const auto &part : Utilities::MPI::all_gather(comm, bodies))
+            all.insert(all.end(), part.begin(), part.end());
+          bodies = all;
+        }
+      std::sort(bodies.begin(), bodies.end());
+      const bool one_body =
+        std::unique(bodies.begin(), bodies.end()) - bodies.begin() <= 1;
       std::vector<unsigned int> also_opened;
-      if (n_kept > 0)
+      if (n_kept > 0 && one_body)
         {
           // Nearest-point queries on an R-tree of the closed set
           // (NearestPoints): O(n log n), not a loop over all pairs.
@@ -487,9 +546,10 @@ namespace Common
                 complementarity(j, nodes, normal, friction, state);
               bool unseen = true;
               for (unsigned int i = 0; i < history.size() && unseen; ++i)
-                unseen = !(history[i][l] == next_codes[l] &&
-                           differing[i] ==
-                             (history[i][l] != current_codes[l] ? 1u : 0u));
+                unseen =
+                  !(history_counts[i] && history[i][l] == next_codes[l] &&
+                    differing[i] ==
+                      (history[i][l] != current_codes[l] ? 1u : 0u));
               candidates.push_back((std::abs(C_n) + C_t.norm()) *
                                    nodes[j].weight);
               candidates.push_back(j);

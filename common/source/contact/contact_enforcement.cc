@@ -232,24 +232,57 @@ namespace Common
     template <int dim>
     void
     ContactEnforcement<dim>::keep_linearized_compression(
+      const VectorType &u,
       const VectorType &linearized_residual)
     {
       if (!normal->has_multipliers())
         return;
+      const bool                       with_friction = friction->has_friction();
+      std::vector<NodeKinematics<dim>> nodes;
+      if (with_friction)
+        nodes = node_kinematics(coupling, contact_state.rows(), u);
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           if (!contact_state.rows().is_held(j))
             continue;
-          NodeState<dim> &node = contact_state.node(j);
-          if (node.status == PointStatus::open || node.pressure >= 0.)
+          NodeState<dim>       &node = contact_state.node(j);
+          const MortarRow<dim> &row  = coupling.row(j);
+          if (node.status == PointStatus::open || !(row.weight > 0.))
             continue;
-          const MortarRow<dim> &row = coupling.row(j);
-          const auto    &dofs       = coupling.secondary_surface().node(j).dofs;
+          const auto    &dofs = coupling.secondary_surface().node(j).dofs;
           Tensor<1, dim> r;
           for (unsigned int c = 0; c < dim; ++c)
             r[c] = linearized_residual(dofs[c]);
-          node.pressure =
-            std::max(node.pressure, (r * row.normal) / row.weight);
+          const double linearized_pressure = (r * row.normal) / row.weight;
+          if (node.pressure < 0.)
+            node.pressure = std::max(node.pressure, linearized_pressure);
+          if (!with_friction || node.status != PointStatus::stick ||
+              !nodes[j].paired)
+            continue;
+          // The stick rule of the active-set update, with either pair of
+          // tractions.
+          FrictionPoint<dim> point;
+          point.slip_increment =
+            contact_state.slip_increment(j, nodes[j].relative_displacement);
+          point.c = policy.tangential_ncp_constant(nodes[j].mesh_size);
+          point.n_free_tangents =
+            contact_state.directions().free_tangents(j).size();
+          const double gap    = nodes[j].weighted_gap / nodes[j].weight;
+          const double c      = policy.ncp_constant(nodes[j].mesh_size);
+          const auto   sticks = [&](const double          pressure,
+                                  const Tensor<1, dim> &traction) {
+            point.traction        = traction;
+            point.normal_pressure = std::max(0., pressure - c * gap);
+            return friction->closed_status(point).status == PointStatus::stick;
+          };
+          const Tensor<1, dim> linearized_traction =
+            -contact_state.directions().free_tangential_part(j, r) / row.weight;
+          if (!sticks(node.pressure, node.tangential_traction) &&
+              sticks(linearized_pressure, linearized_traction))
+            {
+              node.pressure            = linearized_pressure;
+              node.tangential_traction = linearized_traction;
+            }
         }
     }
 
@@ -273,16 +306,29 @@ namespace Common
 
     template <int dim>
     unsigned int
-    ContactEnforcement<dim>::update_active_set(const VectorType &u)
+    ContactEnforcement<dim>::update_active_set(const VectorType &u,
+                                               const double      residual,
+                                               const bool        one_point)
     {
       const unsigned int n_changed =
         policy.update(node_kinematics(coupling, contact_state.rows(), u),
                       *normal,
                       *friction,
-                      contact_state);
+                      contact_state,
+                      residual,
+                      one_point);
       contact_state.update_ghosts();
       count_active();
       return n_changed;
+    }
+
+
+
+    template <int dim>
+    void
+    ContactEnforcement<dim>::restart_cycle_detection()
+    {
+      policy.restart_history(contact_state);
     }
 
 

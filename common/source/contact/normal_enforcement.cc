@@ -419,7 +419,10 @@ namespace Common
           const MortarRow<dim> &row  = coupling.row(j);
           NodeState<dim>       &node = state.node(j);
           node.tangential_traction   = Tensor<1, dim>();
-          if (node.status == PointStatus::open)
+          // A closed node that has lost its partner (a tool moved beyond
+          // the search distance) carries no traction; the next update opens
+          // it.
+          if (node.status == PointStatus::open || !(row.weight > 0.))
             {
               node.pressure = 0.;
               continue;

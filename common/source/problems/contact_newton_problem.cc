@@ -266,10 +266,21 @@ namespace Common
       const auto start = std::chrono::steady_clock::now();
       if (geometry.update(solution))
         {
-          // The direct solver refers to the matrix it factorised.
+          // The direct solver refers to the matrix it factorised. The
+          // linearised residual of the step just taken is still to be
+          // read: it keeps its values through the new layout.
           linear_solver.reset();
+          TrilinosWrappers::MPI::Vector kept_linearized_residual;
+          if (linearized_residual_current)
+            {
+              kept_linearized_residual.reinit(locally_owned_dofs,
+                                              mpi_communicator);
+              kept_linearized_residual = linearized_residual;
+            }
           setup_stored_dofs(*base_constraints);
           setup_matrices();
+          if (linearized_residual_current)
+            linearized_residual = kept_linearized_residual;
         }
       accepted_ghosted = accepted_solution;
       contact_enforcement->update_geometry(
@@ -577,7 +588,8 @@ namespace Common
       // After a Newton update of a nonlinear problem, a closed node opens
       // only if the multiplier of the linearised step is tensile too.
       if (linearized_residual_current)
-        contact_enforcement->keep_linearized_compression(linearized_residual);
+        contact_enforcement->keep_linearized_compression(solution,
+                                                         linearized_residual);
       linearized_residual_current = false;
       contact_enforcement->add_contact_forces(
         constraints_dirichlet_and_hanging_nodes,
@@ -612,22 +624,61 @@ namespace Common
       callbacks.assemble_solve_and_update = [&](const double tolerance) {
         return assemble_and_solve(state, load, tolerance);
       };
+      // In a nonlinear problem the iterate depends on the iteration's
+      // progress, and a set revisited after it is no cycle.
+      double last_residual        = -1.;
       callbacks.evaluate_residual = [&]() {
-        return evaluate_residual(state, load);
+        const Solvers::NewtonResidual residual = evaluate_residual(state, load);
+        if (!solid_operator.is_linear() || geometry.is_current_configuration())
+          last_residual =
+            std::max(residual.equilibrium, residual.complementarity);
+        return residual;
       };
       callbacks.update_active_set = [&]() {
         const auto         t = std::chrono::steady_clock::now();
         const unsigned int n_changed =
-          contact_enforcement->update_active_set(solution);
+          contact_enforcement->update_active_set(solution, last_residual);
         solve_times.active_set_update += IO::seconds_since(t);
         return n_changed;
       };
       callbacks.is_cycling = [&]() {
         return contact_enforcement->is_cycling();
       };
+      // A nonlinear problem may hold a cycling set until equilibrium.
+      if (!solid_operator.is_linear() || geometry.is_current_configuration())
+        {
+          callbacks.restart_cycle_detection = [&]() {
+            contact_enforcement->restart_cycle_detection();
+          };
+          callbacks.update_one_point = [&]() {
+            const auto         t = std::chrono::steady_clock::now();
+            const unsigned int n_changed =
+              contact_enforcement->update_active_set(solution,
+                                                     last_residual,
+                                                     true);
+            solve_times.active_set_update += IO::seconds_since(t);
+            return n_changed;
+          };
+        }
 
-      auto statistics =
-        Solvers::solve_newton(nonlinear_solver_parameters, callbacks, verbose);
+      // A diverging iterate may produce a non-finite value: Release builds
+      // see it in the residual, Debug builds at deal.II's check, which
+      // throws. Either way the step fails and is cut back.
+      Solvers::NewtonStatistics statistics;
+      try
+        {
+          statistics = Solvers::solve_newton(nonlinear_solver_parameters,
+                                             callbacks,
+                                             verbose);
+        }
+      catch (const StandardExceptions::ExcNumberNotFinite &)
+        {
+          linear_solver.reset();
+          statistics.converged = false;
+          statistics.failure   = "non-finite value in an iterate";
+          solve_times.newton += IO::seconds_since(start);
+          return statistics;
+        }
       // Constraints of the solid enforced by an augmented Lagrangian: update
       // the multipliers at the converged state and solve again until the
       // constraints hold.
@@ -746,15 +797,13 @@ namespace Common
 
 
 
+    // Unconstrained nodal forces: every DoF keeps its own, hanging nodes
+    // included, so that the sum over a boundary is the total force.
     template <int dim>
-    std::vector<Tensor<1, dim>>
-    ContactNewtonProblem<dim>::reaction_forces(
-      const std::vector<types::boundary_id> &boundary_ids,
-      const Solvers::LoadState              &state,
-      const ExternalLoad                    &load)
+    TrilinosWrappers::MPI::Vector
+    ContactNewtonProblem<dim>::nodal_reactions(const Solvers::LoadState &state,
+                                               const ExternalLoad       &load)
     {
-      // Unconstrained nodal forces: every DoF keeps its own, hanging nodes
-      // included, so that the sum over a boundary is the total force.
       AffineConstraints<double> none;
       none.close();
       TrilinosWrappers::MPI::Vector f(locally_owned_dofs, mpi_communicator);
@@ -764,8 +813,37 @@ namespace Common
       load.add(state, none, f_ext);
       f_ext.compress(VectorOperation::add);
       f -= f_ext;
+      return f;
+    }
 
-      std::vector<Tensor<1, dim>> reactions(boundary_ids.size());
+
+
+    template <int dim>
+    double
+    ContactNewtonProblem<dim>::reaction_force(
+      const std::vector<types::global_dof_index> &dofs,
+      const Solvers::LoadState                   &state,
+      const ExternalLoad                         &load)
+    {
+      const TrilinosWrappers::MPI::Vector f      = nodal_reactions(state, load);
+      double                              result = 0.;
+      for (const auto dof : dofs)
+        if (locally_owned_dofs.is_element(dof))
+          result += f(dof);
+      return Utilities::MPI::sum(result, mpi_communicator);
+    }
+
+
+
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    ContactNewtonProblem<dim>::reaction_forces(
+      const std::vector<types::boundary_id> &boundary_ids,
+      const Solvers::LoadState              &state,
+      const ExternalLoad                    &load)
+    {
+      const TrilinosWrappers::MPI::Vector f = nodal_reactions(state, load);
+      std::vector<Tensor<1, dim>>         reactions(boundary_ids.size());
       for (unsigned int b = 0; b < boundary_ids.size(); ++b)
         {
           for (unsigned int c = 0; c < dim; ++c)

@@ -92,6 +92,12 @@ namespace Common
       // Inexact solves stop at the first sign of an active set that
       // returns to an earlier one: the rest of the step is solved exactly.
       bool inexact = parameters.linear_tolerance_factor > 0.;
+      // After a cycle, or after n_semismooth iterations that still change
+      // the set: one change per equilibrium (see NewtonCallbacks).
+      constexpr unsigned int n_semismooth               = 8;
+      bool                   one_change_per_equilibrium = false;
+      bool                   hold_set                   = false;
+      unsigned int           n_held                     = 0;
       for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
         {
           // Inexact Newton: the first iteration, which carries the load
@@ -110,8 +116,42 @@ namespace Common
           const bool inexact_solve = linear_tolerance > parameters.tolerance;
           NewtonResidual residual  = callbacks.evaluate_residual();
           residual.increment       = increment;
-          const unsigned int n_changed = callbacks.update_active_set();
-          statistics.n_iterations      = it;
+          // A held set has no equilibrium nearby if the residual grows
+          // (a node that must change carries the body, e.g. its only
+          // support): the set is then updated, one point, from here.
+          // Compared from the second held iterate on: the first one
+          // follows a change of the set, which raises the residual.
+          const bool hold_diverges =
+            hold_set && n_held > 0 &&
+            residual.equilibrium > 2. * statistics.residuals.back().equilibrium;
+          n_held = hold_set ? n_held + 1 : 0;
+          if (hold_set &&
+              (residual.equilibrium < parameters.tolerance || hold_diverges))
+            {
+              hold_set = false;
+              n_held   = 0;
+              callbacks.restart_cycle_detection();
+            }
+          const unsigned int n_changed =
+            hold_set                   ? 0u :
+            one_change_per_equilibrium ? callbacks.update_one_point() :
+                                         callbacks.update_active_set();
+          if (one_change_per_equilibrium && n_changed > 0)
+            hold_set = true;
+          // A semismooth iteration that still changes the set after
+          // n_semismooth iterations wanders among sets without repeating
+          // one: from here, too, one change per equilibrium.
+          if (callbacks.restart_cycle_detection &&
+              !one_change_per_equilibrium && it >= n_semismooth &&
+              n_changed > 0)
+            {
+              verbose << "    Active set still changing: from here one "
+                         "change per equilibrium"
+                      << std::endl;
+              one_change_per_equilibrium = true;
+              hold_set                   = true;
+            }
+          statistics.n_iterations = it;
           statistics.residuals.push_back(residual);
           statistics.active_set_changes.push_back(n_changed);
 
@@ -163,12 +203,21 @@ namespace Common
                   return statistics;
                 }
             }
-          if (callbacks.is_cycling())
+          if (!hold_set && callbacks.is_cycling())
             {
               // An inexact iterate may revisit a set; exact ones decide.
               if (inexact_solve)
                 {
                   inexact = false;
+                  continue;
+                }
+              if (callbacks.restart_cycle_detection)
+                {
+                  verbose << "    Active set cycles: from here one change "
+                             "per equilibrium"
+                          << std::endl;
+                  one_change_per_equilibrium = true;
+                  hold_set                   = true;
                   continue;
                 }
               statistics.failure = "the active set cycles";

@@ -91,6 +91,13 @@ namespace Common
       void
       begin_step(const ContactState<dim> &state);
 
+      /** @brief Forget the active-set history used to detect cycling: the
+       * current set of @p state is the only one seen. For a Newton
+       * iteration that has held a cycling set until equilibrium, whose
+       * earlier sets were judged on states out of equilibrium. */
+      void
+      restart_history(const ContactState<dim> &state);
+
       /**
        * @brief Apply the active-set rule to every paired node: the normal
        * rule NormalEnforcement::is_closed(), then for closed nodes the
@@ -102,7 +109,8 @@ namespace Common
        * node r lies within twice r's distance to the closed set. Near a
        * smooth contact edge the pressure of an oversized zone of width b is
        * negative over a band of about half the excess b - a, so mirroring
-       * the band about its inner end lands on the edge a. If a later
+       * the band about its inner end lands on the edge a. Only where the
+       * closed nodes lie on one primary body (one contact zone). If a later
        * iteration of the step must close points again, the extrapolation
        * stays off for the rest of the step.
        *
@@ -110,11 +118,27 @@ namespace Common
        * (ping-pong between open and closed, or stick and slip), only the
        * point with the largest complementarity violation is changed,
        * choosing one that leads to an unseen set; is_cycling() reports the
-       * case where none exists.
+       * case where none exists, and the set is then left unchanged.
+       *
+       * In a nonlinear problem the iterate depends on where the iteration
+       * stands, not on the set alone, and a set revisited after the
+       * iteration has made progress is no cycle: with @p residual given, a
+       * set seen earlier counts as seen only while @p residual is at least
+       * a tenth of the residual that the set's last use produced. A true
+       * cycle produces the same residuals again and is still caught, one
+       * iteration later at most.
        *
        * Updates the nodes this rank owns (the ghost nodes follow with
        * ContactState::update_ghosts()); collective.
        * @param[in] nodes Kinematics of the nodes at the current iterate.
+       * @param[in] residual Newton residual of the current iterate (the
+       * larger of equilibrium and complementarity, the same on every
+       * rank), which the current set produced; negative (the default):
+       * every set seen in the step counts (a linear problem, whose iterate
+       * depends on the set alone).
+       * @param[in] one_point Change only the point with the largest
+       * complementarity violation that leads to an unseen set, as after a
+       * cycle (for an iteration that judges its sets on equilibria).
        * @return Number of nodes (over all ranks) whose status (or slip
        * sense) changed.
        */
@@ -122,7 +146,9 @@ namespace Common
       update(const std::vector<NodeKinematics<dim>> &nodes,
              const NormalEnforcement<dim>           &normal,
              const FrictionModel<dim>               &friction,
-             ContactState<dim>                      &state);
+             ContactState<dim>                      &state,
+             const double                            residual  = -1.,
+             const bool                              one_point = false);
 
       /** @brief True if the last update could only return to an active
        * set seen earlier in this step. */
@@ -164,9 +190,9 @@ namespace Common
 
       /** The node whose change alone, of those that change from
        * @p current_codes to @p next_codes, leads to a set not in the
-       * history and has the largest complementarity violation (the same on
-       * every rank); numbers::invalid_unsigned_int if there is none
-       * (collective). */
+       * history (the entries that count, see update()) and has the
+       * largest complementarity violation (the same on every rank);
+       * numbers::invalid_unsigned_int if there is none (collective). */
       unsigned int
       single_change(const std::vector<NodeKinematics<dim>> &nodes,
                     const NormalEnforcement<dim>           &normal,
@@ -184,15 +210,22 @@ namespace Common
                       const FrictionModel<dim>               &friction,
                       const ContactState<dim>                &state) const;
 
-      const double                  ncp_factor;
-      const double                  tangential_ncp_factor;
-      const double                  reference_modulus;
-      const bool                    accelerate_release;
-      const InitialActiveSet        initial_active_set;
+      const double           ncp_factor;
+      const double           tangential_ncp_factor;
+      const double           reference_modulus;
+      const bool             accelerate_release;
+      const InitialActiveSet initial_active_set;
+      /** The active sets of the step, in order (the owned nodes' codes). */
       std::vector<std::vector<int>> history;
-      bool                          cycling;
-      bool                          last_update_extrapolated;
-      bool                          extrapolation_enabled;
+      /** Newton residual that each entry of the history produced; infinite
+       * until known. */
+      std::vector<double> history_residual;
+      /** Which entries of the history count as seen in the current update
+       * (all, unless the iteration progressed since their use). */
+      std::vector<bool> history_counts;
+      bool              cycling;
+      bool              last_update_extrapolated;
+      bool              extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common

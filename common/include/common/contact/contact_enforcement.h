@@ -269,9 +269,16 @@ namespace Common
        * slender body held at a few nodes by small forces it would open a
        * supporting node. A node then opens only if both say tension; the
        * two agree at convergence.
+       *
+       * The same holds for friction: a sticking node whose recovered
+       * tractions lie outside the Coulomb cone, but whose linearised ones
+       * (the tangential part of \f$r^{lin}_j/D_j\f$) lie inside, keeps the
+       * linearised tractions and so keeps sticking. A node then starts to
+       * slip only if both say so. @p u is the new iterate (ghosted).
        */
       void
-      keep_linearized_compression(const VectorType &linearized_residual);
+      keep_linearized_compression(const VectorType &u,
+                                  const VectorType &linearized_residual);
 
       /**
        * @brief Add the contact forces of the nodal tractions
@@ -312,16 +319,28 @@ namespace Common
        *
        * Each rank decides the nodes it owns and then receives the status
        * of its ghost nodes from their owners; collective.
+       * @param[in] residual Newton residual of the iterate @p u in a
+       * nonlinear problem, where a set revisited after a decade of progress
+       * is no cycle (ActiveSetPolicy::update()); negative for a linear one.
+       * @param[in] one_point Change only the point with the largest
+       * complementarity violation (ActiveSetPolicy::update()).
        * @return Number of nodes (over all ranks) whose status (or slip
        * direction) changed.
        */
       unsigned int
-      update_active_set(const VectorType &u);
+      update_active_set(const VectorType &u,
+                        const double      residual  = -1.,
+                        const bool        one_point = false);
 
       /** @brief True if the last update could only return to an active
-       * set seen earlier in this step. */
+       * set seen earlier in this step (the set is then left unchanged). */
       bool
       is_cycling() const;
+
+      /** @brief Forget the active sets seen so far in the step but the
+       * current one (ActiveSetPolicy::restart_history()). */
+      void
+      restart_cycle_detection();
 
       /** @brief Norm of the normal and tangential complementarity
        * functions weighted by D_j (N), over all ranks; collective. */

@@ -198,6 +198,18 @@ namespace Common
         const Solvers::LoadState                      &state,
         const ExternalLoad                            &load);
 
+      /**
+       * @brief Reaction force at the DoFs @p dofs at the current state: the
+       * sum of their internal forces minus the external load at @p state
+       * (N; per mm of thickness in plane strain). For supports at single
+       * nodes, such as those of hold_dofs(). Collective; the result is the
+       * same on every rank.
+       */
+      double
+      reaction_force(const std::vector<dealii::types::global_dof_index> &dofs,
+                     const Solvers::LoadState                           &state,
+                     const ExternalLoad                                 &load);
+
       /** @brief Displacement (mm): readable at the DoFs of the rank's own
        * cells and of the contact pair. */
       const dealii::TrilinosWrappers::MPI::Vector &
@@ -242,6 +254,12 @@ namespace Common
       linear_solver_statistics() const;
 
     private:
+      /** Internal forces minus the external load at @p state at every
+       * owned DoF, without constraints (N). Collective. */
+      dealii::TrilinosWrappers::MPI::Vector
+      nodal_reactions(const Solvers::LoadState &state,
+                      const ExternalLoad       &load);
+
       /** The DoFs this rank stores (owned, partition ghosts, the DoFs of
        * the contact rows it holds and the targets of their constraints),
        * the Dirichlet and hanging-node constraints of those DoFs out of

@@ -74,8 +74,24 @@ namespace Common
       std::function<NewtonResidual()> evaluate_residual;
       /** Apply the active-set rule; returns the number of changed points. */
       std::function<unsigned int()> update_active_set;
-      /** True if the active set returned to an earlier state. */
+      /** True if the active set returned to an earlier state (which then
+       * leaves the set unchanged). */
       std::function<bool()> is_cycling;
+      /** Optional, with update_one_point: forget the active sets seen so
+       * far but the current one. If given, a cycle does not end the
+       * iteration, nor do eight semismooth iterations that still change
+       * the set; the rest of the step is an active-set method on
+       * equilibria: the set is held, without updates, until the
+       * equilibrium residual meets the tolerance, then the history is
+       * restarted and the one point with the largest violation changes,
+       * and so on. A nonlinear problem judges its sets on states out of
+       * equilibrium, and a bending body (whose contact stiffness is no
+       * M-matrix) may cycle under the semismooth rule even from equilibria;
+       * one change per equilibrium does not. */
+      std::function<void()> restart_cycle_detection;
+      /** Apply the active-set rule to the one point with the largest
+       * violation; returns the number of changed points (0 or 1). */
+      std::function<unsigned int()> update_one_point;
     };
 
     /**
