@@ -311,12 +311,17 @@ namespace SheetForming
     record.punch_force        = full * loads[0].force[1];
     record.die_force          = full * loads[1].force[1];
     record.hold_force =
-      full * contact_problem->reaction_forces({BoundaryIds::symmetry},
-                                              step.state,
-                                              external_load())[0][1];
-    const double largest = std::max({std::abs(record.punch_force),
-                                     std::abs(record.die_force),
-                                     std::abs(record.hold_force)});
+      held ? full * contact_problem->reaction_force({hold_dof},
+                                                    step.state,
+                                                    external_load()) :
+             0.;
+    // Relative to the largest force so far: once the tools have let go,
+    // every force is round-off, and so is their balance.
+    double largest = std::max({std::abs(record.punch_force),
+                               std::abs(record.die_force),
+                               std::abs(record.hold_force)});
+    for (const auto &earlier : forces)
+      largest = std::max(largest, std::abs(earlier.punch_force));
     record.balance =
       largest > 0. ?
         std::abs(record.punch_force + record.die_force - record.hold_force) /

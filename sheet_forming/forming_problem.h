@@ -53,8 +53,9 @@ namespace SheetForming
     /** Vertical reaction at the held node, full strip (N; zero before the
      * release). */
     double hold_force;
-    /** |punch + die + hold| over the largest of their magnitudes: the
-     * vertical balance of the sheet. */
+    /** |punch + die - hold| over the largest force so far (the largest
+     * of the three magnitudes and every earlier punch force): the vertical
+     * balance of the sheet. */
     double balance;
   };
 
