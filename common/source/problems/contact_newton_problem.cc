@@ -521,12 +521,20 @@ namespace Common
 
     template <int dim>
     bool
+    ContactNewtonProblem<dim>::is_nonlinear() const
+    {
+      return !solid_operator.is_linear() || geometry.is_current_configuration();
+    }
+
+
+
+    template <int dim>
+    bool
     ContactNewtonProblem<dim>::uses_linearized_tractions() const
     {
       return contact_parameters.enforcement ==
                Contact::Enforcement::lagrange_multiplier &&
-             (!solid_operator.is_linear() ||
-              geometry.is_current_configuration());
+             is_nonlinear();
     }
 
 
@@ -629,35 +637,34 @@ namespace Common
       double last_residual        = -1.;
       callbacks.evaluate_residual = [&]() {
         const Solvers::NewtonResidual residual = evaluate_residual(state, load);
-        if (!solid_operator.is_linear() || geometry.is_current_configuration())
+        if (is_nonlinear())
           last_residual =
             std::max(residual.equilibrium, residual.complementarity);
         return residual;
       };
-      callbacks.update_active_set = [&]() {
+      const auto update_set = [&](const bool one_point) {
         const auto         t = std::chrono::steady_clock::now();
         const unsigned int n_changed =
-          contact_enforcement->update_active_set(solution, last_residual);
+          contact_enforcement->update_active_set(solution,
+                                                 last_residual,
+                                                 one_point);
         solve_times.active_set_update += IO::seconds_since(t);
         return n_changed;
+      };
+      callbacks.update_active_set = [&]() {
+        return update_set(false);
       };
       callbacks.is_cycling = [&]() {
         return contact_enforcement->is_cycling();
       };
       // A nonlinear problem may hold a cycling set until equilibrium.
-      if (!solid_operator.is_linear() || geometry.is_current_configuration())
+      if (is_nonlinear())
         {
           callbacks.restart_cycle_detection = [&]() {
             contact_enforcement->restart_cycle_detection();
           };
           callbacks.update_one_point = [&]() {
-            const auto         t = std::chrono::steady_clock::now();
-            const unsigned int n_changed =
-              contact_enforcement->update_active_set(solution,
-                                                     last_residual,
-                                                     true);
-            solve_times.active_set_update += IO::seconds_since(t);
-            return n_changed;
+            return update_set(true);
           };
         }
 

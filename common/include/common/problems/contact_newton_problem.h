@@ -254,6 +254,11 @@ namespace Common
       linear_solver_statistics() const;
 
     private:
+      /** True if the problem is nonlinear: a nonlinear solid, or contact
+       * in the current configuration. */
+      bool
+      is_nonlinear() const;
+
       /** Internal forces minus the external load at @p state at every
        * owned DoF, without constraints (N). Collective. */
       dealii::TrilinosWrappers::MPI::Vector
