@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -146,6 +148,9 @@ namespace Common
 
       solution_owned.reinit(locally_owned_dofs, mpi_communicator);
       accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
+      previous_accepted_solution.reinit(locally_owned_dofs, mpi_communicator);
+      accepted_time          = std::numeric_limits<double>::quiet_NaN();
+      previous_accepted_time = std::numeric_limits<double>::quiet_NaN();
       newton_update.reinit(locally_owned_dofs, mpi_communicator);
       system_rhs.reinit(locally_owned_dofs, mpi_communicator);
       setup_stored_dofs(base_constraints);
@@ -625,6 +630,32 @@ namespace Common
     {
       const auto   start     = std::chrono::steady_clock::now();
       const double cpu_start = IO::process_cpu_seconds();
+      // Extrapolate within a stage (pseudo-time: stage index plus the
+      // fraction of the stage, the stage's end included).
+      solved_time = state.time;
+      if (nonlinear_solver_parameters.extrapolate_initial_guess &&
+          std::isfinite(previous_accepted_time))
+        {
+          const auto stage_of = [](const double t) {
+            return std::ceil(t - 1e-12) - 1.;
+          };
+          const double dt_last = accepted_time - previous_accepted_time;
+          if (stage_of(state.time) == stage_of(accepted_time) &&
+              stage_of(accepted_time) == stage_of(previous_accepted_time) &&
+              dt_last > 0.)
+            {
+              const double ratio =
+                std::min(1., (state.time - accepted_time) / dt_last);
+              solution_owned = accepted_solution;
+              solution_owned.add(ratio, accepted_solution);
+              solution_owned.add(-ratio, previous_accepted_solution);
+              for (const auto dof : held_dofs)
+                if (locally_owned_dofs.is_element(dof))
+                  solution_owned(dof) = accepted_solution(dof);
+              solution_owned.compress(VectorOperation::insert);
+              solution = solution_owned;
+            }
+        }
       geometry.set_load_state(state);
       update_geometry();
       contact_enforcement->begin_step();
@@ -636,7 +667,19 @@ namespace Common
       // progress, and a set revisited after it is no cycle.
       double last_residual        = -1.;
       callbacks.evaluate_residual = [&]() {
-        const Solvers::NewtonResidual residual = evaluate_residual(state, load);
+        // Debug builds throw at the first non-finite value; the iteration
+        // sees it as the non-finite residual of a Release build.
+        Solvers::NewtonResidual residual;
+        try
+          {
+            residual = evaluate_residual(state, load);
+          }
+        catch (const StandardExceptions::ExcNumberNotFinite &)
+          {
+            residual.equilibrium     = std::numeric_limits<double>::quiet_NaN();
+            residual.complementarity = residual.equilibrium;
+            return residual;
+          }
         if (is_nonlinear())
           last_residual =
             std::max(residual.equilibrium, residual.complementarity);
@@ -732,7 +775,10 @@ namespace Common
     void
     ContactNewtonProblem<dim>::commit()
     {
-      accepted_solution = solution_owned;
+      previous_accepted_solution = accepted_solution;
+      previous_accepted_time     = accepted_time;
+      accepted_solution          = solution_owned;
+      accepted_time              = solved_time;
       solid_operator.commit(dof_handler, solution);
       geometry.commit();
       contact_enforcement->commit(solution);

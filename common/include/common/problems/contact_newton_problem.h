@@ -368,6 +368,14 @@ namespace Common
       dealii::TrilinosWrappers::MPI::Vector  solution;
       dealii::TrilinosWrappers::MPI::Vector  solution_owned;
       dealii::TrilinosWrappers::MPI::Vector  accepted_solution;
+      /** The accepted state before accepted_solution, for the
+       * extrapolated initial guess. */
+      dealii::TrilinosWrappers::MPI::Vector previous_accepted_solution;
+      /** Pseudo-times of the two accepted states (NaN until accepted). */
+      double accepted_time          = 0.;
+      double previous_accepted_time = 0.;
+      /** Pseudo-time of the last solve(), which commit() accepts. */
+      double solved_time = 0.;
       /** accepted_solution, readable where solution is (current
        * configuration only). */
       dealii::TrilinosWrappers::MPI::Vector accepted_ghosted;

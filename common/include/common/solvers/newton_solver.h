@@ -46,6 +46,9 @@ namespace Common
        * reach, as a multiple of the previous iteration's Newton residual;
        * 0 solves every system to the linear solver's own tolerance. */
       double linear_tolerance_factor = 0.;
+      /** Start a load step from the linear extrapolation of the last two
+       * accepted states of its stage instead of the last one. */
+      bool extrapolate_initial_guess = false;
     };
 
     /**
