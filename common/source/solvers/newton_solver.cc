@@ -60,12 +60,12 @@ namespace Common
           "Start each load step from the linear extrapolation of the last "
           "two accepted states of its stage, u_n + r (u_n - u_{n-1}) with r "
           "the ratio of the step's pseudo-time increment to the last one "
-          "(at most 1), instead of from u_n. Prescribed values and held "
-          "DoFs keep their own values; the first two steps of a stage, and "
-          "the first after a change of stage, start from u_n. In a smooth "
-          "loading history (forming) the first iterate then lies near the "
-          "solution, and fewer contact nodes change status on the way. "
-          "Affects the iteration path only.");
+          "(at most 1), instead of from u_n. Held DoFs keep their values, "
+          "and prescribed ones take their targets in the first iteration as "
+          "always; the first two steps of a stage start from u_n. In a "
+          "smooth loading history (forming) the first iterate then lies "
+          "near the solution, and fewer contact nodes change status on the "
+          "way. Affects the iteration path only.");
         prm.declare_entry(
           "Step test residual bound",
           "1e-6",
