@@ -1,4 +1,5 @@
 #include <common/contact/contact_assembly.h>
+#include <common/io/run_main.h>
 #include <common/io/timer.h>
 #include <common/physics/rigid_body.h>
 #include <common/problems/contact_newton_problem.h>
@@ -726,6 +727,19 @@ namespace Common
           linear_solver.reset();
           statistics.converged = false;
           statistics.failure   = "non-finite value in an iterate";
+          solve_times.newton += IO::seconds_since(start);
+          return statistics;
+        }
+      // An iterate far from equilibrium may give a matrix that cannot be
+      // factorised: in a nonlinear problem that is a failed step like any
+      // other, cut back; in a linear one the model is at fault.
+      catch (const Solvers::ExcFactorisationFailed &failure)
+        {
+          if (!is_nonlinear())
+            throw;
+          linear_solver.reset();
+          statistics.converged = false;
+          statistics.failure   = IO::one_line_message(failure);
           solve_times.newton += IO::seconds_since(start);
           return statistics;
         }

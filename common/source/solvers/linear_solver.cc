@@ -12,6 +12,7 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
@@ -94,6 +95,67 @@ namespace Common
       }
       prm.leave_subsection();
     }
+
+
+
+    namespace
+    {
+      /** MUMPS' default margin of its workspace over the analysis'
+       * estimate, ICNTL(14), in percent. */
+      constexpr int mumps_default_workspace_margin = 20;
+
+      /** INFOG(1) of a MUMPS solver after its last phase, the smallest
+       * over the ranks of @p comm (errors are negative); 0 for any other
+       * direct solver (whose status says nothing more than "failed"). */
+      int
+      mumps_status(Amesos_BaseSolver &solver, const Epetra_Comm &comm)
+      {
+        auto *mumps  = dynamic_cast<Amesos_Mumps *>(&solver);
+        int   local  = mumps != nullptr ? mumps->GetINFOG()[0] : 0;
+        int   global = local;
+        comm.MinAll(&local, &global, 1);
+        return global;
+      }
+
+      /** Whether a direct solver phase that returned @p code failed on any
+       * rank of @p comm. */
+      bool
+      failed_on_any_rank(const int code, const Epetra_Comm &comm)
+      {
+        int local = code != 0 ? 1 : 0, global = local;
+        comm.MaxAll(&local, &global, 1);
+        return global != 0;
+      }
+
+      /** MUMPS errors that a larger workspace margin cures: -8, -9 (work
+       * arrays), -14, -15 (integer arrays) and -17, -20 (communication
+       * buffers). */
+      bool
+      mumps_needs_workspace(const int status)
+      {
+        return status == -8 || status == -9 || status == -14 || status == -15 ||
+               status == -17 || status == -20;
+      }
+
+      /** One line on why a factorisation failed. */
+      std::string
+      describe_factorisation_failure(const int              status,
+                                     const LinearSolverType type)
+      {
+        if (type != LinearSolverType::mumps)
+          return "the matrix is singular to working precision";
+        std::ostringstream text;
+        text << "MUMPS INFOG(1) = " << status;
+        if (status == -10)
+          text << ", the matrix is numerically singular";
+        else if (status == -13)
+          text << ", memory allocation failed";
+        else if (mumps_needs_workspace(status))
+          text << ", workspace too small even after a new analysis with "
+               << 2 * mumps_default_workspace_margin << " % margin";
+        return text.str();
+      }
+    } // namespace
 
 
 
@@ -193,8 +255,8 @@ namespace Common
                     TrilinosWrappers::MPI::Vector        &x,
                     const TrilinosWrappers::MPI::Vector  &b)
       {
-        AssertThrow(Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) ==
-                      1,
+        AssertThrow(dealii::Utilities::MPI::n_mpi_processes(
+                      A.get_mpi_communicator()) == 1,
                     ExcMessage("Linear solver 'umfpack' runs on one MPI "
                                "rank only; use 'mumps' in parallel."));
         // Copy into deal.II's own sparse format, which UMFPACK reads.
@@ -343,10 +405,36 @@ namespace Common
             }
         }
 
-      auto start = std::chrono::steady_clock::now();
-      AssertThrow(direct->solver->NumericFactorization() == 0,
-                  ExcMessage("Numeric factorisation failed: the linear "
-                             "system is singular."));
+      auto               start = std::chrono::steady_clock::now();
+      const Epetra_Comm &comm  = direct->matrix->Comm();
+      if (failed_on_any_rank(direct->solver->NumericFactorization(), comm))
+        {
+          // MUMPS sizes its workspace in the analysis of the first matrix of
+          // a pattern; pivoting on a later one may need more. Analyse the
+          // matrix at hand, with twice the workspace margin, once.
+          int  status = mumps_status(*direct->solver, comm);
+          bool cured  = false;
+          if (mumps_needs_workspace(status))
+            {
+              dynamic_cast<Amesos_Mumps &>(*direct->solver)
+                .SetICNTL(14, 2 * mumps_default_workspace_margin);
+              cured =
+                !failed_on_any_rank(direct->solver->SymbolicFactorization(),
+                                    comm) &&
+                !failed_on_any_rank(direct->solver->NumericFactorization(),
+                                    comm);
+              if (!cured)
+                status = mumps_status(*direct->solver, comm);
+            }
+          if (!cured)
+            {
+              direct.reset();
+              AssertThrow(false,
+                          ExcFactorisationFailed(
+                            describe_factorisation_failure(status,
+                                                           parameters.type)));
+            }
+        }
       direct->factorised         = true;
       direct->factorisation_time = seconds_since(start);
       ++stats.n_factorisations;

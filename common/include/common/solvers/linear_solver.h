@@ -23,6 +23,16 @@ namespace Common
   {
     /** Values of the parameter "Solver type" in subsection "Linear
      * solver". */
+    /**
+     * A direct solver could not factorise the matrix: its message names
+     * the solver's status (for MUMPS the code INFOG(1) and its meaning).
+     * A nonlinear problem treats it as a failed Newton iteration and cuts
+     * the load step back; any other caller reports it.
+     */
+    DeclException1(ExcFactorisationFailed,
+                   std::string,
+                   << "the linear system could not be factorised: " << arg1);
+
     enum class LinearSolverType
     {
       umfpack,
