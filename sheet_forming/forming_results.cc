@@ -296,6 +296,9 @@ namespace SheetForming
     console.print_quantity("Forming angle (chord)",
                            "deg",
                            forming_angles.chord);
+    console.print_quantity("Straight-span angle of the tools",
+                           "deg",
+                           parameters.geometry.straight_span_angle(stroke));
     if (released)
       {
         console.print_quantity("Angle after release (chord)",
@@ -333,6 +336,8 @@ namespace SheetForming
       .set("punch_force_at_full_stroke_N", at_stroke)
       .set("forming_angle_deg", forming_angles.chord)
       .set("forming_angle_end_tangent_deg", forming_angles.end_tangent)
+      .set("straight_span_angle_deg",
+           parameters.geometry.straight_span_angle(stroke))
       .set("max_force_balance_relative_error", worst_balance);
     if (released)
       results.set("angle_after_release_deg", final_angles.chord)

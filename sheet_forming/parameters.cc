@@ -30,6 +30,25 @@ namespace SheetForming
 
 
 
+  double
+  GeometryParameters::straight_span_angle(const double d) const
+  {
+    const double r_punch    = punch_radius + 0.5 * thickness;
+    const double r_shoulder = shoulder_radius + 0.5 * thickness;
+    const double dx         = shoulder_centre_x();
+    const double dy         = -shoulder_radius - (thickness + punch_radius - d);
+    const double distance   = std::hypot(dx, dy);
+    // The line crosses between the centres (the sheet lies outside the
+    // punch and above the shoulder): it makes the angle
+    // asin((r_punch + r_shoulder) / distance) with the line of centres.
+    const double rise =
+      std::atan2(dy, dx) +
+      std::asin(std::min(1., (r_punch + r_shoulder) / distance));
+    return 90. - rise * 180. / numbers::PI;
+  }
+
+
+
   void
   GeometryParameters::declare_parameters(ParameterHandler &prm)
   {

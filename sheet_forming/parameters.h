@@ -47,6 +47,17 @@ namespace SheetForming
      * cavity's centre is (0, -R3). */
     double
     shoulder_centre_x() const;
+
+    /** The flange angle (deg, from the downward vertical, as the spec's
+     * section 6.2 measures it) of a sheet that leaves the punch and the
+     * die's shoulder along their common tangent, straight in between: the
+     * tangent of the two circles the mid-surface follows when it lies on
+     * the punch (radius Rp + t/2 about (0, t + Rp - d)) and on the
+     * shoulder (radius R3 + t/2 about (R2 + R3, -R3)), at punch
+     * displacement @p d (mm) with the die in place. The tools alone fix
+     * it: neither the material nor friction enter. */
+    double
+    straight_span_angle(const double d) const;
   };
 
   /** Subsection "Mesh". */
