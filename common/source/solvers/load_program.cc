@@ -166,10 +166,14 @@ namespace Common
               const std::string text = prm.get(channel.name);
               if (!text.empty())
                 {
+                  // Decimal notation only: strtod also reads hexadecimal
+                  // ("0x10" is 16), which no one means in a load program.
                   char        *end   = nullptr;
                   const double value = std::strtod(text.c_str(), &end);
                   AssertThrow(end != text.c_str() && *end == '\0' &&
-                                std::isfinite(value),
+                                std::isfinite(value) &&
+                                text.find_first_not_of("0123456789+-.eE") ==
+                                  std::string::npos,
                               ExcMessage(where + "'" + channel.name +
                                          "' must be a number or empty, not '" +
                                          text + "'."));
