@@ -14,6 +14,7 @@
 #include <common/io/run_main.h>
 #include <common/solvers/linear_solver.h>
 
+#include "../five_point_matrix.h"
 #include "../tests.h"
 
 #include <deal.II/base/index_set.h>
@@ -73,16 +74,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
 
-  const IndexSet         all = complete_index_set(n);
-  DynamicSparsityPattern dsp(n, n);
-  for (unsigned int row = 0; row < n; ++row)
-    for (const int offset :
-         {-static_cast<int>(n_side), -1, 0, 1, static_cast<int>(n_side)})
-      if (static_cast<int>(row) + offset >= 0 &&
-          static_cast<int>(row) + offset < static_cast<int>(n))
-        dsp.add(row, row + offset);
+  const IndexSet                 all = complete_index_set(n);
   TrilinosWrappers::SparseMatrix A;
-  A.reinit(all, all, dsp, MPI_COMM_WORLD);
+  reinit_five_point(A, n_side);
   TrilinosWrappers::MPI::Vector x(all, MPI_COMM_WORLD), b(x), r(x);
   for (unsigned int i = 0; i < n; ++i)
     b(i) = 1. + 0.01 * i;
