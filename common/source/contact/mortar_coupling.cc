@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -428,7 +429,21 @@ namespace Common
       const unsigned int n_surfaces = partners.size();
       rows.assign(n_nodes, MortarRow<dim>());
       dual_coefficients.assign(secondary->n_faces(), FullMatrix<double>());
-      std::vector<double>         mass(n_nodes * n_surfaces, 0.);
+      std::vector<double> mass(n_nodes * n_surfaces, 0.);
+      // The change of the weighted gap with the node's own position:
+      // g_j = n_j . int psi_j (y - x_j) with y = x + t n the partner point
+      // on the ray of the face, and int psi_j (x - x_j) = 0 (dual basis),
+      // so g_j = int psi_j t (n_j . n), and t changes by -(m . dx) / (n . m)
+      // when x moves by dx, m the surface's inward normal at y. Its
+      // gradient is -int psi_j N_j m (n_j . n) / (n . m): the dual-weighted
+      // normal of the surface, not of the secondary faces, which on a
+      // coarse face over a curved tool differ by the angle between them.
+      // Along that direction the linearised condition corrects the gap at
+      // once (along the face normal only in part at each iteration), and
+      // a frictionless force acts normal to the tool. Terms of the order of
+      // the pointwise gap (the turn of the rays) are left out, and rays
+      // that graze the surface count as if they met it at 75 degrees.
+      std::vector<Tensor<1, dim>> gap_gradient(n_nodes);
       std::vector<Tensor<1, dim>> moment(n_nodes * n_surfaces);
       const std::vector<bool>     paired_faces = select_faces(integrated_rows);
       std::vector<bool>           node_covered(integrated);
@@ -507,6 +522,11 @@ namespace Common
                   const unsigned int k = face.nodes[a] * n_surfaces + i;
                   mass[k] += psi * JxW;
                   moment[k] += psi * JxW * hit.point;
+                  const Tensor<1, dim> m = -hit.normal;
+                  gap_gradient[face.nodes[a]] +=
+                    psi * N[a] * JxW *
+                    (secondary->node(face.nodes[a]).normal * n) /
+                    std::max(n * m, 0.25) * m;
                 }
             }
           if (!covered)
@@ -559,6 +579,19 @@ namespace Common
                 nearest_hit(node.position, node.normal, row.mesh_size, false);
               if (i != numbers::invalid_unsigned_int)
                 row.nodal_gap = hit.t;
+            }
+          // The row's normal is the direction in which its weighted gap
+          // changes with the node's own displacement (see gap_gradient),
+          // within the symmetry planes the node lies on; the node's normal
+          // where that direction is ill-defined (more than 45 degrees off).
+          if (row.has_partner)
+            {
+              Tensor<1, dim> m = gap_gradient[j];
+              for (unsigned int c = 0; c < dim; ++c)
+                if (node.on_symmetry_plane[c])
+                  m[c] = 0.;
+              if (m * node.normal > std::sqrt(0.5) * m.norm())
+                row.normal = m / m.norm();
             }
           row.reference_weighted_gap = row.has_partner ? row.normal * gap : 0.;
         }

@@ -44,7 +44,13 @@ namespace Common
     {
       /** D_j: integral of the node's shape function (mm^(dim-1)). */
       double weight = 0.;
-      /** Averaged outward unit normal of the secondary surface at j. */
+      /** Averaged outward unit normal of the secondary surface at j;
+       * against analytic rigid surfaces the direction in which the
+       * weighted gap changes with the node's own displacement, the
+       * dual-weighted inward normal of the surfaces at the partner points
+       * (which on a coarse secondary face over a curved tool differs from
+       * the face normal by the angle between them). The contact force and
+       * the linearised normal condition act along it. */
       dealii::Tensor<1, dim> normal;
       /** (primary node k, M_jk in mm^(dim-1), or mm^2 if axisymmetric),
        * sorted by k. */
