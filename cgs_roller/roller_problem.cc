@@ -132,16 +132,23 @@ namespace CgsRoller
     transfinite.initialize(triangulation);
     triangulation.set_manifold(1, transfinite);
 
-    triangulation.refine_global(parameters.mesh.n_global_refinements);
+    Common::Geometry::refine_global_checked(
+      triangulation,
+      parameters.mesh.n_global_refinements,
+      "Mesh: 'Number of global refinements'");
     const double L        = parameters.mesh.contact_zone_length;
     const auto   distance = [H, L](const Point<dim> &p) {
       const double dx = std::max(0., p[0] - L);
       return std::sqrt(dx * dx + (p[1] - H) * (p[1] - H));
     };
-    Common::Geometry::refine_toward<dim>(triangulation,
-                                         distance,
-                                         parameters.mesh.n_contact_refinements,
-                                         parameters.mesh.grading_factor);
+    Common::Geometry::refine_toward<dim>(
+      triangulation,
+      distance,
+      parameters.mesh.n_contact_refinements,
+      parameters.mesh.grading_factor,
+      "Mesh: 'Number of global refinements', "
+      "'Number of contact refinements' "
+      "and 'Grading factor'");
   }
 
 

@@ -270,18 +270,28 @@ namespace LoadedPin
         tria.set_manifold(id, transfinite);
       }
 
-    tria.refine_global(options.n_global_refinements);
+    Common::Geometry::refine_global_checked(
+      tria,
+      options.n_global_refinements,
+      "Mesh: 'Number of global refinements', 'Number of sheet layers' and "
+      "'Number of pin layers'");
     Common::Geometry::refine_toward<3>(
       tria,
       [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
       options.n_contact_refinements,
-      options.grading_factor);
+      options.grading_factor,
+      "Mesh: 'Number of global refinements', 'Number of sheet layers', "
+      "'Number of pin layers', 'Number of contact refinements' and "
+      "'Grading factor'");
     Common::Geometry::refine_toward<3>(
       tria,
       [&geometry, &options](const Point<3> &p) {
         return arc_end_distance(geometry, options.arc_end_angle, p);
       },
       options.n_arc_end_refinements,
-      options.grading_factor);
+      options.grading_factor,
+      "Mesh: 'Number of global refinements', 'Number of sheet layers', "
+      "'Number of pin layers', 'Number of contact refinements', 'Number of "
+      "arc end refinements' and 'Grading factor'");
   }
 } // namespace LoadedPin

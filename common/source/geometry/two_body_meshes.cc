@@ -94,18 +94,64 @@ namespace Common
 
 
 
+    namespace
+    {
+      /** Refuse a mesh of @p n_cells cells beyond max_active_cells. */
+      template <int dim>
+      void
+      check_mesh_size(const std::uint64_t n_cells, const std::string &entries)
+      {
+        AssertThrow(n_cells <= max_active_cells<dim>,
+                    ExcMessage(entries + " would make a mesh of more than " +
+                               std::to_string(max_active_cells<dim>) +
+                               " cells (" + std::to_string(n_cells) +
+                               " or more): use fewer refinements."));
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    refine_global_checked(Triangulation<dim> &tria,
+                          const unsigned int  n_times,
+                          const std::string  &entries)
+    {
+      // Each refinement multiplies the cells by 2^dim: the count is
+      // checked one refinement at a time, before it overflows.
+      std::uint64_t n_cells = tria.n_active_cells();
+      for (unsigned int i = 0; i < n_times; ++i)
+        {
+          n_cells *= (1u << dim);
+          check_mesh_size<dim>(n_cells, entries);
+        }
+      tria.refine_global(n_times);
+    }
+
+
+
     template <int dim>
     void
     refine_toward(Triangulation<dim>                              &tria,
                   const std::function<double(const Point<dim> &)> &distance,
                   const unsigned int                               n_passes,
-                  const double                                     factor)
+                  const double                                     factor,
+                  const std::string                               &entries)
     {
       for (unsigned int pass = 0; pass < n_passes; ++pass)
         {
+          std::uint64_t n_flagged = 0;
           for (const auto &cell : tria.active_cell_iterators())
             if (distance(cell->center()) < factor * cell->diameter())
-              cell->set_refine_flag();
+              {
+                cell->set_refine_flag();
+                ++n_flagged;
+              }
+          // Each flagged cell becomes 2^dim; the neighbours refined to keep
+          // one hanging node per face come on top.
+          check_mesh_size<dim>(tria.n_active_cells() +
+                                 n_flagged * ((1u << dim) - 1),
+                               entries);
           tria.execute_coarsening_and_refinement();
         }
     }
@@ -155,15 +201,25 @@ namespace Common
     join_bodies(const std::vector<const Triangulation<3> *> &,
                 Triangulation<3> &);
     template void
+    refine_global_checked(Triangulation<2> &,
+                          const unsigned int,
+                          const std::string &);
+    template void
     refine_toward(Triangulation<2> &,
                   const std::function<double(const Point<2> &)> &,
                   const unsigned int,
-                  const double);
+                  const double,
+                  const std::string &);
+    template void
+    refine_global_checked(Triangulation<3> &,
+                          const unsigned int,
+                          const std::string &);
     template void
     refine_toward(Triangulation<3> &,
                   const std::function<double(const Point<3> &)> &,
                   const unsigned int,
-                  const double);
+                  const double,
+                  const std::string &);
     template double
     smallest_cell_near(const Triangulation<2> &,
                        const std::function<double(const Point<2> &)> &);

@@ -13,6 +13,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,11 +38,41 @@ namespace Common
                 dealii::Triangulation<dim>                            &result);
 
     /**
+     * @brief Largest number of active cells a mesh of the suite may have:
+     * 1 million in 2D, half a million in 3D, beyond what a workstation
+     * solves with a direct solver. Refinements that would exceed it are refused
+     * before they run (refine_global_checked(), refine_toward()).
+     */
+    template <int dim>
+    constexpr std::uint64_t max_active_cells = dim == 2 ? 1'000'000 : 500'000;
+
+    /**
+     * @brief Refine @p tria globally @p n_times, refusing a mesh of more
+     * than max_active_cells cells before refining.
+     * @param[in] entries The parameter entries that set the refinement, as
+     * the error message names them (e.g. "'Number of global refinements'
+     * in subsection Mesh").
+     * @throws dealii::ExcMessage naming @p entries if the mesh would be
+     * too large.
+     */
+    template <int dim>
+    void
+    refine_global_checked(dealii::Triangulation<dim> &tria,
+                          const unsigned int          n_times,
+                          const std::string          &entries);
+
+    /**
      * @brief Graded refinement toward a region: in each of @p n_passes
      * passes, refine every active cell whose centre lies closer to the
      * region than @p factor times its diameter. Cells shrink by half per
-     * band, and each band is as thick as a few of its cells.
+     * band, and each band is as thick as a few of its cells. A pass that
+     * would make more than max_active_cells cells is refused before it
+     * runs.
      * @param[in] distance Distance of a point to the region (mm).
+     * @param[in] entries The parameter entries that set the refinement, as
+     * the error message names them.
+     * @throws dealii::ExcMessage naming @p entries if the mesh would be
+     * too large.
      */
     template <int dim>
     void
@@ -49,7 +80,8 @@ namespace Common
       dealii::Triangulation<dim>                              &tria,
       const std::function<double(const dealii::Point<dim> &)> &distance,
       const unsigned int                                       n_passes,
-      const double                                             factor);
+      const double                                             factor,
+      const std::string                                       &entries);
 
     /**
      * @brief Smallest cell diameter near a region: the minimum over cells
