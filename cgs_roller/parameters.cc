@@ -1,5 +1,7 @@
 #include "parameters.h"
 
+#include <common/io/parameter_values.h>
+
 
 namespace CgsRoller
 {
@@ -33,13 +35,13 @@ namespace CgsRoller
   {
     prm.enter_subsection("Geometry");
     {
-      roller_radius    = prm.get_double("Roller radius");
-      block_half_width = prm.get_double("Block half width");
-      block_height     = prm.get_double("Block height");
+      const std::string s = "Geometry";
+      roller_radius = Common::IO::get_positive_length(prm, s, "Roller radius");
+      block_half_width =
+        Common::IO::get_positive_length(prm, s, "Block half width");
+      block_height = Common::IO::get_positive_length(prm, s, "Block height");
     }
     prm.leave_subsection();
-    AssertThrow(roller_radius > 0. && block_height > 0.,
-                ExcMessage("Geometry: radius and height must be positive."));
     AssertThrow(block_half_width > roller_radius,
                 ExcMessage("Geometry: 'Block half width' must exceed the "
                            "roller radius."));

@@ -1,5 +1,7 @@
 #include "parameters.h"
 
+#include <common/io/parameter_values.h>
+
 #include <cmath>
 
 
@@ -106,16 +108,16 @@ namespace Punch3d
   {
     prm.enter_subsection("Geometry");
     {
-      punch_radius      = prm.get_double("Punch radius");
-      punch_height      = prm.get_double("Punch height");
-      fillet_radius     = prm.get_double("Fillet radius");
-      foundation_radius = prm.get_double("Foundation radius");
-      foundation_height = prm.get_double("Foundation height");
+      const std::string s = "Geometry";
+      punch_radius  = Common::IO::get_positive_length(prm, s, "Punch radius");
+      punch_height  = Common::IO::get_positive_length(prm, s, "Punch height");
+      fillet_radius = Common::IO::get_positive_length(prm, s, "Fillet radius");
+      foundation_radius =
+        Common::IO::get_positive_length(prm, s, "Foundation radius");
+      foundation_height =
+        Common::IO::get_positive_length(prm, s, "Foundation height");
     }
     prm.leave_subsection();
-    AssertThrow(punch_radius > 0. && punch_height > 0. &&
-                  foundation_height > 0.,
-                ExcMessage("Geometry: radii and heights must be positive."));
     AssertThrow((fillet_radius > 0. && fillet_radius < 0.4 * punch_radius &&
                  3. * fillet_radius < punch_height) ||
                   (hemispherical_end() && punch_height > 1.5 * punch_radius),

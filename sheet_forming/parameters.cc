@@ -1,27 +1,11 @@
 #include "parameters.h"
 
+#include <common/io/parameter_values.h>
+
 #include <cmath>
 
 namespace SheetForming
 {
-  namespace
-  {
-    /** Read a length entry that must be positive. */
-    double
-    positive_length(ParameterHandler  &prm,
-                    const std::string &subsection,
-                    const std::string &entry)
-    {
-      const double value = prm.get_double(entry);
-      AssertThrow(value > 0. && std::isfinite(value),
-                  ExcMessage(subsection + ": '" + entry +
-                             "' must be positive (mm)."));
-      return value;
-    }
-  } // namespace
-
-
-
   double
   GeometryParameters::shoulder_centre_x() const
   {
@@ -103,12 +87,14 @@ namespace SheetForming
     const std::string s = "Geometry";
     prm.enter_subsection(s);
     {
-      punch_radius      = positive_length(prm, s, "Punch radius");
-      die_radius        = positive_length(prm, s, "Die radius");
-      shoulder_radius   = positive_length(prm, s, "Die shoulder radius");
-      sheet_half_length = positive_length(prm, s, "Sheet half-length");
-      thickness         = positive_length(prm, s, "Sheet thickness");
-      width             = positive_length(prm, s, "Sheet width");
+      punch_radius = Common::IO::get_positive_length(prm, s, "Punch radius");
+      die_radius   = Common::IO::get_positive_length(prm, s, "Die radius");
+      shoulder_radius =
+        Common::IO::get_positive_length(prm, s, "Die shoulder radius");
+      sheet_half_length =
+        Common::IO::get_positive_length(prm, s, "Sheet half-length");
+      thickness = Common::IO::get_positive_length(prm, s, "Sheet thickness");
+      width     = Common::IO::get_positive_length(prm, s, "Sheet width");
     }
     prm.leave_subsection();
     AssertThrow(die_radius >= punch_radius + thickness,

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -26,6 +27,23 @@ namespace Common
                      "its documentation and default\n"
                   << "  " << name << " --help               this text\n";
       }
+
+
+      /** True if the file has a line other than blanks and comments. */
+      bool
+      has_entries(const std::string &filename)
+      {
+        std::ifstream in(filename);
+        std::string   line;
+        while (std::getline(in, line))
+          {
+            const auto first = line.find_first_not_of(" \t\r");
+            if (first != std::string::npos && line[first] != '#')
+              return true;
+          }
+        return false;
+      }
+
 
 
       /**
@@ -139,6 +157,13 @@ namespace Common
           AssertThrow(std::filesystem::is_regular_file(argument),
                       dealii::ExcMessage("cannot open parameter file <" +
                                          argument + ">"));
+          // A file without entries would run the defaults: a case that no
+          // file describes.
+          AssertThrow(has_entries(argument),
+                      dealii::ExcMessage(
+                        "parameter file <" + argument +
+                        "> has no entries (it is empty or holds only "
+                        "comments)"));
           run(argument);
         }
       catch (const std::exception &exception)

@@ -21,7 +21,9 @@ namespace Common
      * Usage: `<app> <file.prm>` runs the case; `<app> --help` prints the
      * usage; `<app> --print-parameters` prints every `.prm` entry with its
      * documentation, units and default. Without arguments the usage is
-     * printed and the exit code is 1. Any error is reported in one line on
+     * printed and the exit code is 1. A parameter file that is missing, or
+     * has no entries (empty, or comments only), is refused before the
+     * application reads it. Any error is reported in one line on
      * standard error, `<app>: error: <what>`, and the exit code is 1.
      * In a parallel run an error on any rank ends every rank (none is
      * left waiting in a collective call) and is reported once: by rank 0
