@@ -196,10 +196,18 @@ namespace Punch3d
             std::ofstream marc_displacements(
               out.path("marc_surface_displacement.csv"));
             marc_displacements << "r,u_r_mu0,u_z_mu0,u_r_mu01,u_z_mu01\n";
+            // A value the reference does not give is an empty field (a
+            // missing point to gnuplot and to CSV readers), not "nan".
+            const auto field = [](const double value) {
+              std::ostringstream text;
+              if (std::isfinite(value))
+                text << value;
+              return text.str();
+            };
             for (const auto &p : marc_surface)
-              marc_displacements << p.r << ',' << p.ur_mu0 << ',' << p.uz_mu0
-                                 << ',' << p.ur_mu01 << ',' << p.uz_mu01
-                                 << '\n';
+              marc_displacements << p.r << ',' << field(p.ur_mu0) << ','
+                                 << field(p.uz_mu0) << ',' << field(p.ur_mu01)
+                                 << ',' << field(p.uz_mu01) << '\n';
             std::ofstream curves(out.path("fe_reference.csv"));
             curves << "r,pressure_marc,pressure_abaqus,"
                       "tangential_traction_marc,tangential_traction_abaqus\n";

@@ -88,20 +88,35 @@ namespace Common
 
 
 
+    namespace
+    {
+      /** Secondary nodes with a partner, over all ranks (each rank
+       * integrates the rows it holds: the owners count). */
+      template <int dim>
+      unsigned int
+      n_paired_nodes(const ContactNewtonProblem<dim> &problem)
+      {
+        const auto  &coupling = problem.coupling();
+        const auto  &rows     = problem.enforcement().rows();
+        unsigned int n_paired = 0;
+        for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+          n_paired += rows.is_owned(j) && coupling.row(j).has_partner;
+        if (rows.is_distributed())
+          n_paired = Utilities::MPI::sum(n_paired, rows.communicator());
+        return n_paired;
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     print_setup(IO::Console                     &console,
                 const DoFHandler<dim>           &dof_handler,
                 const ContactNewtonProblem<dim> &problem)
     {
-      // Each rank integrates the rows it holds: the owners count.
-      const auto  &coupling = problem.coupling();
-      const auto  &rows     = problem.enforcement().rows();
-      unsigned int n_paired = 0;
-      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-        n_paired += rows.is_owned(j) && coupling.row(j).has_partner;
-      if (rows.is_distributed())
-        n_paired = Utilities::MPI::sum(n_paired, rows.communicator());
+      const auto        &coupling = problem.coupling();
+      const unsigned int n_paired = n_paired_nodes(problem);
       console.stream() << "Mesh: "
                        << dof_handler.get_triangulation().n_active_cells()
                        << " active cells, " << dof_handler.n_dofs()
@@ -142,6 +157,18 @@ namespace Common
               const std::vector<std::string>  &result_files)
     {
       print_setup<dim>(console, dof_handler, problem);
+      // Rows integrated once, in the reference configuration, never gain a
+      // partner: without one the bodies cannot touch.
+      const auto &contact = parameters.contact;
+      AssertThrow(problem.contact_geometry().is_current_configuration() ||
+                    n_paired_nodes(problem) > 0,
+                  ExcMessage(
+                    "Contact: no node of the secondary surface ('Secondary "
+                    "boundary id' = " +
+                    std::to_string(contact.secondary_boundary_id) + ", " +
+                    std::to_string(problem.coupling().n_rows()) +
+                    " nodes) faces the primary surface within 'Search "
+                    "distance': the bodies cannot come into contact."));
       if (parameters.run_control.dry_run)
         {
           console.stream() << "Dry run: parameters, mesh and contact pairing "

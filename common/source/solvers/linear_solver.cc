@@ -23,6 +23,7 @@
 #include <exception>
 #include <functional>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace Common
@@ -100,6 +101,33 @@ namespace Common
 
     namespace
     {
+      /** For its lifetime, what is written to std::cerr is dropped:
+       * Amesos_Mumps prints a banner of several lines (INFOG(1), INFOG(2))
+       * there on every failed phase, which the solver reports in one
+       * line instead (ExcFactorisationFailed). */
+      class DroppedErrorStream
+      {
+      public:
+        DroppedErrorStream()
+          : kept(std::cerr.rdbuf(sink.rdbuf()))
+        {}
+
+        ~DroppedErrorStream()
+        {
+          std::cerr.rdbuf(kept);
+        }
+
+        DroppedErrorStream(const DroppedErrorStream &) = delete;
+        DroppedErrorStream &
+        operator=(const DroppedErrorStream &) = delete;
+
+      private:
+        std::ostringstream sink;
+        std::streambuf    *kept;
+      };
+
+
+
       /** MUMPS' default margin of its workspace over the analysis'
        * estimate, ICNTL(14), in percent. */
       constexpr int mumps_default_workspace_margin = 20;
@@ -359,6 +387,7 @@ namespace Common
           AssertThrow(direct->solver != nullptr,
                       ExcMessage("The requested direct solver is not "
                                  "available in this Trilinos."));
+          const DroppedErrorStream quiet;
           AssertThrow(direct->solver->SymbolicFactorization() == 0,
                       ExcMessage("Symbolic factorisation failed."));
         }
@@ -405,8 +434,9 @@ namespace Common
             }
         }
 
-      auto               start = std::chrono::steady_clock::now();
-      const Epetra_Comm &comm  = direct->matrix->Comm();
+      auto                     start = std::chrono::steady_clock::now();
+      const Epetra_Comm       &comm  = direct->matrix->Comm();
+      const DroppedErrorStream quiet;
       if (failed_on_any_rank(direct->solver->NumericFactorization(), comm))
         {
           // MUMPS sizes its workspace in the analysis of the first matrix of

@@ -171,11 +171,14 @@ namespace Common
                   char        *end   = nullptr;
                   const double value = std::strtod(text.c_str(), &end);
                   AssertThrow(end != text.c_str() && *end == '\0' &&
-                                std::isfinite(value) &&
+                                (value == 0. ||
+                                 (std::abs(value) >= min_channel_value &&
+                                  std::abs(value) <= max_channel_value)) &&
                                 text.find_first_not_of("0123456789+-.eE") ==
                                   std::string::npos,
                               ExcMessage(where + "'" + channel.name +
-                                         "' must be a number or empty, not '" +
+                                         "' must be 0, a number of magnitude "
+                                         "from 1e-9 to 1e9, or empty, not '" +
                                          text + "'."));
                   current[channel.name] = value;
                 }
@@ -185,6 +188,26 @@ namespace Common
           prm.leave_subsection();
         }
       prm.leave_subsection();
+      // A program that never leaves zero loads nothing: every result
+      // would be zero, and relative residuals undefined.
+      bool loads = false;
+      for (const auto &stage : stages)
+        for (const auto &[name, value] : stage.end_values)
+          loads = loads || value != 0.;
+      if (!loads && !channels.empty())
+        {
+          std::string names;
+          for (unsigned int c = 0; c < channels.size(); ++c)
+            names += (c == 0                   ? "'" :
+                      c + 1 == channels.size() ? "' and '" :
+                                                 "', '") +
+                     channels[c].name;
+          AssertThrow(false,
+                      ExcMessage("Load program: " + names +
+                                 (channels.size() == 1 ? "' is" : "' are") +
+                                 " 0 in every stage: nothing loads the "
+                                 "model."));
+        }
     }
 
 

@@ -95,6 +95,11 @@ namespace Common
     {
       /** Most stages a program may have. */
       static constexpr unsigned int max_stages = 6;
+      /** Smallest and largest magnitude of a channel's nonzero value, in
+       * the channel's unit: beyond them the residuals, which are relative
+       * to the load, lose their meaning. */
+      static constexpr double min_channel_value = 1e-9;
+      static constexpr double max_channel_value = 1e9;
 
       /**
        * @brief Declare subsection "Load program" with "Number of stages",
