@@ -1,0 +1,306 @@
+#!/usr/bin/env python3
+"""Robustness sweep: the neighbourhood of every application's production case.
+
+For each application, runs a table of variations of its production file
+(with the entries of its coarse test case set in it, as scripts/fuzz_prm.py
+does: table fuzz_prm.APPS) and classifies each run:
+
+  converged  exit 0, results/summary.json with finite values only, no NaN or
+             inf in any CSV file, and the force balance of summary.json
+             (results/force_balance_relative_error, or
+             results/max_force_balance_relative_error) at most 1e-6; the
+             Newton iterations (total, most per step) and the cutbacks are
+             listed, and a step of more than 15 iterations is marked;
+  failed     exit != 0 with one line '<app>: error: ...' on standard error
+             and no result file (summary.json, profile CSV, PNG): a clean
+             refusal or a solver failure reported as such;
+  DEFECT     anything else: a crash (signal), several lines on standard
+             error, results left by a failed run, a NaN or inf in an output,
+             a force balance above 1e-6, exit 0 without a summary, a run
+             still going at the time limit without progress (hang) or
+             stopped at the memory limit.
+
+A new application joins by adding its variations to VARIATIONS (and its
+production file and coarse entries to fuzz_prm.APPS). The variations
+follow the robustness issue: friction coefficient mu in {0, 0.05, 0.3, 1, 5}
+where the case has friction; the stiffness ratio of the two bodies from
+1e-4 to 1e4 (where there are two deformable bodies); 1, 2, 5 and 50 load
+steps; a first step of 1e-6 of the load; Q1 and Q2; penalty enforcement at
+three stiffnesses a decade apart. Variations an application cannot express
+with its entries (non-matching meshes, perturbed interior nodes, initial
+gaps of 1e-8 and 1e-3 cells) are listed as 'not available' with the reason.
+
+Usage:
+  python3 scripts/robustness_sweep.py [--apps APP ...] [--build DIR]
+      [--work-dir DIR] [--time-limit 120] [--memory-limit 4000]
+      [--only NAME ...] [--list]
+
+Writes robustness_sweep.csv and robustness_sweep.json into the work
+directory (default results/robustness_sweep) and prints the table; exits
+non-zero if a run is a defect.
+"""
+
+import argparse
+import csv
+import importlib.util
+import json
+import math
+import os
+import shutil
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+_spec = importlib.util.spec_from_file_location("fuzz_prm", os.path.join(HERE, "fuzz_prm.py"))
+fuzz = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(fuzz)
+
+MAX_ITERATIONS_PER_STEP = 15
+FORCE_BALANCE_TOLERANCE = 1e-6
+
+
+def friction(mu):
+    """Coulomb friction mu (frictionless for mu = 0)."""
+    if mu == 0:
+        return [("Contact", "Friction law", "frictionless")]
+    return [("Contact", "Friction law", "coulomb"),
+            ("Contact", "Friction coefficient", f"{mu:g}")]
+
+
+def moduli(first, second, ratio, modulus=210000.):
+    """Young's moduli of two bodies (subsections first and second) with
+    E_first / E_second = ratio, the larger one at modulus (MPa)."""
+    e_first = modulus if ratio >= 1 else modulus * ratio
+    e_second = modulus if ratio <= 1 else modulus / ratio
+    return [(first, "Young's modulus", f"{e_first:g}"),
+            (second, "Young's modulus", f"{e_second:g}")]
+
+
+def steps(n):
+    return [("Load program/Stage 1", "Number of steps", str(n))]
+
+
+def tiny_first_step(channel, value, n_steps):
+    """A first stage to 1e-6 of the load in one step, then the load in
+    n_steps steps (the channel's end value is value)."""
+    return [("Load program", "Number of stages", "2"),
+            ("Load program/Stage 1", "Number of steps", "1"),
+            ("Load program/Stage 1", channel, f"{1e-6 * value:g}"),
+            ("Load program/Stage 2", "Number of steps", str(n_steps)),
+            ("Load program/Stage 2", channel, f"{value:g}")]
+
+
+def degree(p):
+    return [("Mesh", "Element degree", str(p))]
+
+
+def penalty(stiffness):
+    return [("Contact", "Enforcement", "penalty"),
+            ("Contact", "Penalty stiffness", f"{stiffness:g}")]
+
+
+MUS = [0, 0.05, 0.3, 1, 5]
+RATIOS = [1e-4, 1e-2, 1, 1e2, 1e4]
+STEPS = [1, 2, 5, 50]
+PENALTIES = [1e5, 1e6, 1e7]
+
+NOT_AVAILABLE_MESH = ("non-matching meshes and perturbed interior nodes",
+                      "the meshes are generated from the geometry entries; no entry "
+                      "changes the size ratio across the contact or moves interior nodes")
+NOT_AVAILABLE_GAP = ("initial gaps and overlaps of 1e-8 and 1e-3 cells",
+                     "no entry offsets the bodies: the geometry places them in contact")
+
+
+def standard(first=None, second=None, channel="Load factor", value=1., n_steps=1,
+             with_rigid=()):
+    """The variations of an application with a load factor: friction,
+    stiffness ratio (first/second: the material subsections of the two
+    bodies), load steps, a tiny first step, Q1/Q2 and penalty."""
+    table = [(f"mu {mu:g}", friction(mu)) for mu in MUS]
+    if first and second:
+        table += [(f"E ratio {r:g}", moduli(first, second, r)) for r in RATIOS]
+    table += list(with_rigid)
+    table += [(f"{n} load steps", steps(n)) for n in STEPS]
+    table.append(("first step 1e-6 of the load", tiny_first_step(channel, value, n_steps)))
+    table += [(f"Q{p}", degree(p)) for p in (1, 2)]
+    table += [(f"penalty {k:g} MPa/mm", penalty(k)) for k in PENALTIES]
+    return table
+
+
+VARIATIONS = {
+    "cgs_roller": {
+        "runs": standard("Roller material", "Block material", n_steps=5),
+        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
+                          ("rigid roller", "cgs_roller models both bodies as elastic")],
+    },
+    "punch3d": {
+        "runs": standard("Punch material", "Foundation material",
+                         with_rigid=[("rigid punch", [("Model", "Punch", "rigid")]),
+                                     ("rigid punch surface",
+                                      [("Model", "Punch", "rigid surface")])]),
+        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP],
+    },
+    "loaded_pin": {
+        "runs": standard("Pin material", "Sheet material"),
+        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
+                          ("rigid pin", "loaded_pin models both bodies as elastic")],
+    },
+    "sheet_forming": {
+        # The coarse forming and release of tests/sheet_forming
+        # (forming_release_coarse.sh): 2 x 30 cells over the whole stroke.
+        "base": [("Mesh", "Number of cells through the thickness", "2"),
+                 ("Mesh", "Number of cells along the length", "30")],
+        "runs": [(f"mu {mu:g}", friction(mu)) for mu in MUS]
+        + [(f"{n} forming steps", steps(n)) for n in STEPS]
+        + [("Q2", degree(2) + [("Solid", "Element technology", "displacement")]),
+           ("Q1, displacement element", [("Solid", "Element technology",
+                                          "displacement")])]
+        # Penalty enforcement is frictionless only.
+        + [(f"penalty {k:g} MPa/mm, mu 0", penalty(k) + friction(0)) for k in PENALTIES],
+        "not_available": [
+            NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
+            ("stiffness ratio of the two bodies", "the tools are rigid"),
+            ("first step 1e-6 of the load",
+             "the strip rests on the die and lifts off at once; the forming stage "
+             "is one channel program, varied by its number of steps")],
+    },
+}
+
+
+def prm_text(app, entries):
+    """The production file with the app's base entries (its own, or the
+    fuzz harness's coarse entries), the Output entries and entries set."""
+    production = os.path.join(ROOT, "parameters", fuzz.APPS[app]["production"])
+    base = VARIATIONS[app].get("base", fuzz.APPS[app]["coarse"])
+    with open(production) as f:
+        lines = fuzz.parse_lines(f.read().rstrip("\n"))
+    for path, key, value in base + fuzz.OUTPUT + entries:
+        lines = fuzz.set_entry(lines, tuple(path.split("/")), key, value)
+    return fuzz.render(lines) + "\n"
+
+
+def force_balance(summary):
+    results = summary.get("results", {})
+    for key in ("force_balance_relative_error", "max_force_balance_relative_error"):
+        if key in results:
+            return results[key]
+    return None
+
+
+def classify(app, case_dir, code, stopped, progressing):
+    """(status, detail, newton record) of one run."""
+    with open(os.path.join(case_dir, "stderr.txt"), "rb") as f:
+        stderr = f.read().decode(errors="replace")
+    lines = [l for l in stderr.split("\n") if l.strip()]
+    left = sorted(os.path.relpath(os.path.join(folder, name), case_dir)
+                  for folder, _, files in os.walk(case_dir) for name in files
+                  if fuzz.RESULT_FILE.search(name))
+    if stopped == "memory":
+        return "DEFECT memory", "stopped at the memory limit", {}
+    if stopped == "time":
+        if progressing:
+            return "running", "still making progress at the time limit", {}
+        return "DEFECT hang", "no progress in the last third of the time limit", {}
+    if code < 0:
+        return "DEFECT crash", f"killed by signal {-code}", {}
+    if code != 0:
+        if len(lines) != 1 or not lines[0].startswith(f"{app}: error: "):
+            return "DEFECT stderr", " | ".join(l[:160] for l in lines[:4]), {}
+        if left:
+            return "DEFECT results left", ", ".join(left[:4]), {}
+        return "failed", lines[0][len(app) + 9:], {}
+    summary_path = os.path.join(case_dir, "results", "summary.json")
+    if not os.path.isfile(summary_path):
+        return "DEFECT no summary", "exit 0 without results/summary.json", {}
+    bad = fuzz.non_finite_in_outputs(case_dir)
+    if bad:
+        return "DEFECT non-finite", "; ".join(f"{f} {w}: {v}" for f, w, v in bad[:3]), {}
+    with open(summary_path) as f:
+        summary = json.load(f)
+    newton = summary.get("newton", {})
+    balance = force_balance(summary)
+    if balance is not None and not balance <= FORCE_BALANCE_TOLERANCE:
+        return "DEFECT force balance", f"relative error {balance:.2e}", newton
+    detail = "" if balance is None else f"force balance {balance:.1e}"
+    if newton.get("max_iterations_per_step", 0) > MAX_ITERATIONS_PER_STEP:
+        detail = (detail + "; " if detail else "") + (
+            f"more than {MAX_ITERATIONS_PER_STEP} Newton iterations in a step")
+    return "converged", detail, newton
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--apps", nargs="+", default=list(VARIATIONS),
+                        choices=list(VARIATIONS))
+    parser.add_argument("--build", default=os.path.join(ROOT, "build-release"),
+                        help="build directory with the executables")
+    parser.add_argument("--work-dir", default=os.path.join(ROOT, "results",
+                                                           "robustness_sweep"))
+    parser.add_argument("--time-limit", type=float, default=120.,
+                        help="seconds per run (default 120)")
+    parser.add_argument("--memory-limit", type=float, default=4000.,
+                        help="MB of resident memory per run (default 4000)")
+    parser.add_argument("--only", nargs="+", default=[],
+                        help="run only the variations whose name contains one of these")
+    parser.add_argument("--list", action="store_true", help="list the variations")
+    args = parser.parse_args()
+
+    rows, n_defects = [], 0
+    for app in args.apps:
+        table = [(name, entries) for name, entries in VARIATIONS[app]["runs"]
+                 if not args.only or any(o in name for o in args.only)]
+        if args.list:
+            for name, entries in table:
+                print(f"{app}: {name}: " + "; ".join(f"{p}/{k} = {v}" for p, k, v in entries))
+            for name, why in VARIATIONS[app]["not_available"]:
+                print(f"{app}: {name}: not available ({why})")
+            continue
+        executable = os.path.join(args.build, app, app)
+        if not os.access(executable, os.X_OK):
+            sys.exit(f"robustness_sweep: no executable {executable}; build the target {app}")
+        for number, (name, entries) in enumerate(table, 1):
+            case_dir = os.path.join(args.work_dir, app, f"{number:02d}")
+            shutil.rmtree(case_dir, ignore_errors=True)
+            os.makedirs(case_dir)
+            with open(os.path.join(case_dir, "case.prm"), "w") as f:
+                f.write(prm_text(app, entries))
+            with open(os.path.join(case_dir, "variation.txt"), "w") as f:
+                f.write(name + "\n")
+            code, stopped, progressing, wall = fuzz.run(executable, case_dir,
+                                                        args.time_limit, args.memory_limit)
+            status, detail, newton = classify(app, case_dir, code, stopped, progressing)
+            n_defects += status.startswith("DEFECT")
+            row = {"app": app, "variation": name, "status": status,
+                   "newton_iterations": newton.get("total_iterations", ""),
+                   "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
+                   "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
+                   "detail": detail, "case": os.path.relpath(case_dir, ROOT)}
+            rows.append(row)
+            print(f"{app:14s} {name:30s} {status:22s} it {str(row['newton_iterations']):>5s} "
+                  f"max {str(row['max_iterations_per_step']):>3s} cutbacks "
+                  f"{str(row['cutbacks']):>3s} {wall:7.1f} s  {detail[:110]}", flush=True)
+        for name, why in VARIATIONS[app]["not_available"]:
+            rows.append({"app": app, "variation": name, "status": "not available",
+                         "newton_iterations": "", "max_iterations_per_step": "",
+                         "cutbacks": "", "wall_time_s": "", "detail": why, "case": ""})
+    if args.list:
+        return 0
+    os.makedirs(args.work_dir, exist_ok=True)
+    with open(os.path.join(args.work_dir, "robustness_sweep.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    counts = {}
+    for row in rows:
+        counts[row["status"]] = counts.get(row["status"], 0) + 1
+    with open(os.path.join(args.work_dir, "robustness_sweep.json"), "w") as f:
+        json.dump({"counts": counts, "runs": rows}, f, indent=1)
+    print("robustness sweep: " + ", ".join(f"{n} {s}" for s, n in sorted(counts.items()))
+          + f"; results in {os.path.relpath(args.work_dir, ROOT)}")
+    return 1 if n_defects else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
