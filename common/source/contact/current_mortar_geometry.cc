@@ -183,6 +183,8 @@ namespace Common
       // moves the primary edge inwards (MortarCoupling's free-edge
       // extension).
       target.set_free_edge_extension(0.05);
+      // Rows integrated again at every iterate: the gap's own gradient.
+      target.set_tool_normals(true);
       if (primary_surface != nullptr)
         target.reinit(secondary_surface,
                       *primary_surface,

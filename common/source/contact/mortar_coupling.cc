@@ -584,7 +584,7 @@ namespace Common
           // changes with the node's own displacement (see gap_gradient),
           // within the symmetry planes the node lies on; the node's normal
           // where that direction is ill-defined (more than 45 degrees off).
-          if (row.has_partner)
+          if (row.has_partner && tool_normals)
             {
               Tensor<1, dim> m = gap_gradient[j];
               for (unsigned int c = 0; c < dim; ++c)
@@ -825,6 +825,15 @@ namespace Common
           (void)add_point;
           return 0.;
         }
+    }
+
+
+
+    template <int dim>
+    void
+    MortarCoupling<dim>::set_tool_normals(const bool use)
+    {
+      tool_normals = use;
     }
 
 

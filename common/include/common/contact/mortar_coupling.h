@@ -45,7 +45,8 @@ namespace Common
       /** D_j: integral of the node's shape function (mm^(dim-1)). */
       double weight = 0.;
       /** Averaged outward unit normal of the secondary surface at j;
-       * against analytic rigid surfaces the direction in which the
+       * against analytic rigid surfaces in the current configuration
+       * (MortarCoupling::set_tool_normals()) the direction in which the
        * weighted gap changes with the node's own displacement, the
        * dual-weighted inward normal of the surfaces at the partner points
        * (which on a coarse secondary face over a curved tool differs from
@@ -221,6 +222,18 @@ namespace Common
       set_free_edge_extension(const double fraction);
 
       /**
+       * @brief Whether rows against analytic rigid surfaces take the
+       * surfaces' normal (MortarRow::normal) rather than the secondary
+       * surface's. Right where the rows are integrated again at every
+       * iterate (the current configuration), so that the weighted gap's
+       * own gradient is the row's normal; in the reference configuration
+       * the gap is linear in the displacement along the secondary normal,
+       * as the small-strain theory has it. False by default.
+       */
+      void
+      set_tool_normals(const bool use);
+
+      /**
        * @brief Adapt the rows to the hanging nodes of the secondary
        * surface; call after reinit().
        *
@@ -359,6 +372,9 @@ namespace Common
       /** Extension of the free primary edges, as a fraction of a face's
        * parameter range (set_free_edge_extension()). */
       double free_edge_extension = 0.;
+      /** Rows against rigid surfaces take their normal
+       * (set_tool_normals()). */
+      bool tool_normals = false;
 
       /** The parameter box of each primary face, extended past its free
        * edges by free_edge_extension: lower and upper bound per
