@@ -94,8 +94,12 @@ namespace CgsRoller
     // the reference slip and tangential traction vanish.
     const bool has_slip_ratio =
       std::isfinite(slip_reference) && slip_reference != 0.;
-    const double q_reference = spence.peak_tangential_traction();
-    const bool   has_q_ratio = q_reference > 0.;
+    // Spence's traction is not available where the stick zone fills the
+    // contact in double precision (|beta|/mu < 0.082).
+    const bool   has_spence_traction = spence.has_traction();
+    const double q_reference =
+      has_spence_traction ? spence.peak_tangential_traction() : 0.;
+    const bool has_q_ratio = q_reference > 0.;
     if (has_slip_ratio)
       console.print_quantity("Slip at x = a/2",
                              "mm",
@@ -143,9 +147,10 @@ namespace CgsRoller
         for (unsigned int i = 0; i <= 400; ++i)
           {
             const double x = 1.5 * a_ref * i / 400.;
-            reference << x << ',' << hertz.pressure(x) << ','
-                      << spence.tangential_traction(x) << ','
-                      << spence.frictionless_slip(x) << ','
+            reference << x << ',' << hertz.pressure(x) << ',';
+            if (has_spence_traction)
+              reference << spence.tangential_traction(x);
+            reference << ',' << spence.frictionless_slip(x) << ','
                       << spence.frictionless_relative_displacement(x) << ','
                       << mu * hertz.pressure(x) << '\n';
           }
@@ -187,12 +192,15 @@ namespace CgsRoller
         traction.x_label = x_label;
         traction.y_label = "tangential traction [MPa]";
         traction.x_range = x_range;
-        traction.series  = {{"reference_profile.csv",
-                             1,
-                             3,
-                            friction ? "Spence (increasing load)" : "zero",
-                             "lines lw 2"},
-                            {"contact_profile.csv", 1, 3, fe_label, fe_style}};
+        traction.series  = {{"contact_profile.csv", 1, 3, fe_label, fe_style}};
+        if (has_spence_traction)
+          traction.series.insert(traction.series.begin(),
+                                 {"reference_profile.csv",
+                                  1,
+                                  3,
+                                  friction ? "Spence (increasing load)" :
+                                             "zero",
+                                  "lines lw 2"});
         if (friction)
           traction.series.push_back(
             {"reference_profile.csv", 1, 6, "mu p (Hertz)", "lines dt 2"});
@@ -265,18 +273,22 @@ namespace CgsRoller
              mu == 0. ? "closed form S0, doc/references.md sec. 1.3" :
                         "Spence, tabulated in doc/references.md sec. 1.3");
     if (friction)
-      reference
-        .set("friction_source",
-             "Spence partial slip under increasing load (Goodman "
-             "approximation)")
-        .set("stick_ratio_c_over_a", spence.stick_ratio())
-        .set("stick_half_width_mm", spence.stick_half_width())
-        .set("peak_tangential_traction_MPa", spence.peak_tangential_traction())
-        .set("coupled_source",
-             "half-spaces without the Goodman approximation, boundary "
-             "elements (common/analytic/coupled_partial_slip)")
-        .set("coupled_stick_ratio_c_over_a", coupled_stick_ratio)
-        .set("coupled_peak_pressure_MPa", coupled_peak_pressure);
+      {
+        reference
+          .set("friction_source",
+               "Spence partial slip under increasing load (Goodman "
+               "approximation)")
+          .set("stick_ratio_c_over_a", spence.stick_ratio())
+          .set("stick_half_width_mm", spence.stick_half_width());
+        if (has_spence_traction)
+          reference.set("peak_tangential_traction_MPa", q_reference);
+        reference
+          .set("coupled_source",
+               "half-spaces without the Goodman approximation, boundary "
+               "elements (common/analytic/coupled_partial_slip)")
+          .set("coupled_stick_ratio_c_over_a", coupled_stick_ratio)
+          .set("coupled_peak_pressure_MPa", coupled_peak_pressure);
+      }
 
     JsonObject ratios;
     ratios.set("peak_pressure", peak / hertz.peak_pressure())

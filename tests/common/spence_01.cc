@@ -155,6 +155,33 @@ main()
     deallog << "beta = 0 -> 1, mu = 0 -> 0, sign of beta ignored, "
                "mu < 0 throws: "
             << pass_fail(special_ok) << std::endl;
+
+    // |beta|/mu = 1/35 < 0.082: c/a rounds to 1, the stick zone fills the
+    // contact; the solution is set up, but the traction accessors throw.
+    const Common::Analytic::SpencePartialSlip full_stick(1.,
+                                                         1.,
+                                                         1.,
+                                                         1. / 7.,
+                                                         5.);
+    bool                                      full_stick_ok =
+      !full_stick.has_traction() && full_stick.stick_ratio() == 1.;
+    try
+      {
+        full_stick.tangential_traction(0.5);
+        full_stick_ok = false;
+      }
+    catch (const ExceptionBase &)
+      {}
+    try
+      {
+        full_stick.peak_tangential_traction();
+        full_stick_ok = false;
+      }
+    catch (const ExceptionBase &)
+      {}
+    deallog << "beta = 1/7, mu = 5: c/a = 1, traction not available and "
+               "its accessors throw: "
+            << pass_fail(full_stick_ok) << std::endl;
   }
 
   // (iii) Benchmark 1: traction.

@@ -16,6 +16,16 @@ namespace Common
     {
       using dealii::numbers::PI;
 
+      /** The exception of the traction accessors where the stick zone
+       * fills the contact. */
+      dealii::StandardExceptions::ExcMessage
+      not_available()
+      {
+        return dealii::StandardExceptions::ExcMessage(
+          "Spence: |beta|/mu is so small that the stick zone fills the "
+          "contact in double precision; the traction is not available.");
+      }
+
       // Gauss-Kronrod 7/15-point rule on [-1, 1] (QUADPACK qk15): Kronrod
       // abscissae, the odd ones (1, 3, 5, 7) being the Gauss points, and
       // the weights of both rules.
@@ -251,6 +261,7 @@ namespace Common
       , beta(std::abs(beta))
       , mu(mu)
       , k(spence_stick_ratio(beta, mu))
+      , traction_available(true)
       , peak_traction(0.)
       , peak_position(0.)
     {
@@ -260,11 +271,11 @@ namespace Common
                                      "and mu non-negative."));
       if (this->beta == 0. || mu == 0.)
         return; // q = 0 everywhere
-      AssertThrow(k < 1.,
-                  dealii::ExcMessage("Spence: |beta|/mu is so small that the "
-                                     "stick zone fills the contact in double "
-                                     "precision; the traction is not "
-                                     "available."));
+      if (k >= 1.)
+        {
+          traction_available = false;
+          return;
+        }
       if (k == 0.)
         {
           // Full slip: q = mu p, largest at the centre.
@@ -357,6 +368,14 @@ namespace Common
 
 
 
+    bool
+    SpencePartialSlip::has_traction() const
+    {
+      return traction_available;
+    }
+
+
+
     double
     SpencePartialSlip::stick_half_width() const
     {
@@ -377,6 +396,7 @@ namespace Common
     double
     SpencePartialSlip::tangential_traction(const double x) const
     {
+      AssertThrow(traction_available, not_available());
       const double q = p0 * normalized_traction(std::abs(x) / a);
       return (x < 0. ? -q : q);
     }
@@ -386,6 +406,7 @@ namespace Common
     double
     SpencePartialSlip::peak_tangential_traction() const
     {
+      AssertThrow(traction_available, not_available());
       return peak_traction;
     }
 

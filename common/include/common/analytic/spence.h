@@ -132,16 +132,26 @@ namespace Common
        * magnitude is used.
        * @param[in] mu Coulomb friction coefficient, >= 0.
        *
-       * Throws if an argument is out of range, or if \f$\beta \ne 0\f$,
+       * Throws if an argument is out of range. If \f$\beta \ne 0\f$,
        * \f$\mu > 0\f$ and c/a rounds to 1 (\f$|\beta|/\mu < 0.082\f$),
-       * where the traction is not available. With beta = 0 or mu = 0 the
-       * tangential traction is identically zero.
+       * the stick zone fills the contact in double precision and the
+       * traction is not available (has_traction() is false). With beta = 0
+       * or mu = 0 the tangential traction is identically zero.
        */
       SpencePartialSlip(const double half_width,
                         const double peak_pressure,
                         const double radius,
                         const double beta,
                         const double mu);
+
+      /**
+       * @brief Whether tangential_traction() and
+       * peak_tangential_traction() are available: false only if c/a rounds
+       * to 1 with beta != 0 and mu > 0 (the stick zone fills the contact in
+       * double precision, and the stick-zone integral degenerates).
+       */
+      bool
+      has_traction() const;
 
       /** @brief Stick-zone ratio c/a, dimensionless (see
        * spence_stick_ratio()). */
@@ -163,7 +173,7 @@ namespace Common
        * \f$q = \mu p\f$ in the slip zones \f$c \le |x| \le a\f$, zero for
        * \f$|x| \ge a\f$, and \f$q < \mu p\f$ in the stick zone. Continuous,
        * including at x = c. About 0.1 ms per call in the stick zone, 1 us
-       * outside it.
+       * outside it. Throws if has_traction() is false.
        *
        * @param[in] x Distance from the centre of the contact (mm).
        */
@@ -178,7 +188,7 @@ namespace Common
        * c = 0.406 a). For a small stick zone the peak is practically at c;
        * for c/a close to 1 it moves inward (x = 0.70 a for
        * |beta|/mu = 0.5). mu p0 for full slip (c = 0); zero if the traction
-       * vanishes identically.
+       * vanishes identically. Throws if has_traction() is false.
        */
       double
       peak_tangential_traction() const;
@@ -253,6 +263,8 @@ namespace Common
       double beta;
       double mu;
       double k;
+      /** False if the stick zone fills the contact (has_traction()). */
+      bool traction_available;
 
       /**
        * Nodes \f$w_j\f$ (increasing) of the variable \f$u = k\sin w\f$ and
