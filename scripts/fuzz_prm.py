@@ -124,7 +124,7 @@ Usage: scripts/fuzz_prm.py [--app cgs_roller punch3d loaded_pin sheet_forming]
            [--build DIR | --executable FILE] [--production FILE]
            [--count 200] [--seed 1] [--time-limit 60] [--huge-time-limit 15]
            [--memory-limit 4000] [--ci] [--only N ...] [--list]
-           [--work-dir DIR]
+           [--work-dir DIR] [--summary FILE]
 """
 import argparse
 import csv
@@ -925,9 +925,7 @@ def fuzz_app(app, executable, production, args):
         with open(os.path.join(case_dir, "mutation.txt"), "w") as f:
             f.write(f"{mutation.kind}: {mutation.description}\nexpect: {mutation.expect}\n"
                     f"names: {mutation.names}\n")
-        limit = args.time_limit
-        if mutation.expect == "refuse":
-            limit = min(limit, args.huge_time_limit)
+        limit = args.huge_time_limit if mutation.expect == "refuse" else args.time_limit
         code, stopped, progressing, wall = run(executable, case_dir, limit,
                                                args.memory_limit)
         status, detail = classify(app, mutation, case_dir, code, stopped, progressing,
@@ -988,6 +986,9 @@ def main():
                         help="print the mutations (number, kind, description) and stop")
     parser.add_argument("--work-dir", help="where the runs go (default: a temporary "
                         "directory, removed at the end if no defect is found)")
+    parser.add_argument("--summary", help="write the counts per application (mutations, "
+                        "rejected, ran, running, defects, wall time) to this JSON file, "
+                        "as the report's robustness section reads them")
     args = parser.parse_args()
     if (args.executable or args.production) and len(args.app) != 1:
         parser.error("--executable and --production need a single --app")
@@ -1010,6 +1011,23 @@ def main():
         return
     print()
     n_defects = sum(summarise(app, outcomes) for app, outcomes in results.items())
+    if args.summary:
+        table = {}
+        for app, outcomes in results.items():
+            statuses = [o[2] for o in outcomes if o[0] > 0]
+            table[app] = {
+                "mutations": len(statuses),
+                "rejected": statuses.count("rejected"),
+                "ran": statuses.count("ran"),
+                "running": statuses.count("running"),
+                "defects": sum(1 for o in outcomes
+                               if o[2] not in ("rejected", "ran", "running")),
+                "wall_time_s": round(sum(o[4] for o in outcomes), 1),
+                "ci_subset": bool(args.ci),
+                "seed": args.seed}
+        os.makedirs(os.path.dirname(os.path.abspath(args.summary)), exist_ok=True)
+        with open(args.summary, "w") as f:
+            json.dump(table, f, indent=1)
     if temporary and n_defects == 0:
         shutil.rmtree(args.work_dir, ignore_errors=True)
     elif temporary:
