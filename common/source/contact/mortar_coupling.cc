@@ -253,20 +253,30 @@ namespace Common
               {
                 const Point<dim - 1> &eta_0 = parameter_boxes[m][0];
                 const Point<dim - 1> &eta_1 = parameter_boxes[m][1];
-                const auto p0 = ContactSearch<dim>::project_along_normal_field(
-                  *secondary,
-                  s,
-                  primary->point(m, eta_0));
-                const auto p1 = ContactSearch<dim>::project_along_normal_field(
-                  *secondary,
-                  s,
-                  primary->point(m, eta_1));
-                if (!p0.converged || !p1.converged)
-                  continue;
-                const double xi_a =
-                  std::max(0., std::min(p0.eta[0], p1.eta[0]));
-                const double xi_b =
-                  std::min(1., std::max(p0.eta[0], p1.eta[0]));
+                // The parameters of the primary face's ends on the
+                // secondary face. An end more than ten secondary faces
+                // away (a primary face much longer than the secondary one)
+                // has no projection; its side of the face, along the
+                // chord, is all the clipping needs. Points of a wrong
+                // segment fail the projection checks below, and the face
+                // then counts as uncovered.
+                const auto end_parameter = [&](const Point<dim - 1> &eta) {
+                  const Point<dim> y = primary->point(m, eta);
+                  const auto       p =
+                    ContactSearch<dim>::project_along_normal_field(*secondary,
+                                                                   s,
+                                                                   y);
+                  if (p.converged)
+                    return p.eta[0];
+                  const Point<dim> x0 = secondary->point(s, Point<dim - 1>(0.));
+                  const Tensor<1, dim> chord =
+                    secondary->point(s, Point<dim - 1>(1.)) - x0;
+                  return (y - x0) * chord / chord.norm_square();
+                };
+                const double xi_0 = end_parameter(eta_0);
+                const double xi_1 = end_parameter(eta_1);
+                const double xi_a = std::max(0., std::min(xi_0, xi_1));
+                const double xi_b = std::min(1., std::max(xi_0, xi_1));
                 if (xi_b - xi_a < 1e-12)
                   continue;
 
