@@ -2,6 +2,8 @@
 
 #include <common/io/parameter_values.h>
 
+#include <cmath>
+
 
 namespace CgsRoller
 {
@@ -24,6 +26,14 @@ namespace CgsRoller
                         "200",
                         Patterns::Double(0.),
                         "Height of the block. Units: mm.");
+      prm.declare_entry("Initial gap",
+                        "0",
+                        Patterns::Double(),
+                        "Distance by which the roller starts above the "
+                        "block (negative: an overlap, the roller starts "
+                        "pressed into it), for tests of initial gaps; 0 "
+                        "for the benchmark. At most 1 % of the roller "
+                        "radius either way. Units: mm.");
     }
     prm.leave_subsection();
   }
@@ -40,8 +50,12 @@ namespace CgsRoller
       block_half_width =
         Common::IO::get_positive_length(prm, s, "Block half width");
       block_height = Common::IO::get_positive_length(prm, s, "Block height");
+      initial_gap  = prm.get_double("Initial gap");
     }
     prm.leave_subsection();
+    AssertThrow(std::abs(initial_gap) <= 0.01 * roller_radius,
+                ExcMessage("Geometry: 'Initial gap' must be at most 1 % of "
+                           "the roller radius either way."));
     AssertThrow(block_half_width > roller_radius,
                 ExcMessage("Geometry: 'Block half width' must exceed the "
                            "roller radius."));
@@ -56,7 +70,12 @@ namespace CgsRoller
     {
       Common::Geometry::MeshParameters::declare_parameters(
         prm,
-        {"about half the roller radius", "the contact strip", 6, 14});
+        {"about half the roller radius",
+         "the contact strip",
+         6,
+         14,
+         "roller",
+         "block"});
       prm.declare_entry("Contact zone length",
                         "8",
                         Patterns::Double(0.),

@@ -32,6 +32,9 @@ namespace CgsRoller
     double block_half_width;
     /** Block height (mm). */
     double block_height;
+    /** Distance of the roller above the block at the start, negative
+     * for an overlap (mm). */
+    double initial_gap;
   };
 
   /** Subsection "Mesh": the common entries and the refined strip. */

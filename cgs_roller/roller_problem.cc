@@ -75,7 +75,7 @@ namespace CgsRoller
     const double     R = parameters.geometry.roller_radius;
     const double     W = parameters.geometry.block_half_width;
     const double     H = parameters.geometry.block_height;
-    const Point<dim> centre(0., H + R);
+    const Point<dim> centre(0., H + R + parameters.geometry.initial_gap);
 
     Triangulation<dim> block;
     const double       coarse_size = R / 2.;
@@ -149,6 +149,10 @@ namespace CgsRoller
       "Mesh: 'Number of global refinements', "
       "'Number of contact refinements' "
       "and 'Grading factor'");
+    parameters.mesh.apply_variations<dim>(triangulation,
+                                          distance,
+                                          MaterialIds::roller,
+                                          MaterialIds::block);
   }
 
 
@@ -171,7 +175,8 @@ namespace CgsRoller
     // The point load acts on the vertical DoF of the roller's top vertex.
     const Point<dim> top(0.,
                          parameters.geometry.block_height +
-                           2. * parameters.geometry.roller_radius);
+                           2. * parameters.geometry.roller_radius +
+                           parameters.geometry.initial_gap);
     load_dof =
       Common::Geometry::vertex_dof(dof_handler,
                                    top,

@@ -14,10 +14,12 @@ namespace LoadedPin
       prm.declare_entry("Clearance",
                         "0",
                         Patterns::Double(),
-                        "Radial clearance between hole and pin, at least 0 "
-                        "(the benchmark: 0, the pin fits the hole) and less "
-                        "than half the hole radius; the pin's radius is the "
-                        "hole radius minus the clearance. Units: mm.");
+                        "Radial clearance between hole and pin (the "
+                        "benchmark: 0, the pin fits the hole), less than "
+                        "half the hole radius; negative for an interference "
+                        "fit of at most 1 % of the hole radius. The pin's "
+                        "radius is the hole radius minus the clearance. "
+                        "Units: mm.");
       prm.declare_entry("Outer radius",
                         "100",
                         Patterns::Double(),
@@ -76,7 +78,9 @@ namespace LoadedPin
          "the contact surface (the hole's cylinder over the sheet "
          "thickness)",
          2,
-         8});
+         8,
+         "pin",
+         "sheet"});
       prm.declare_entry("Number of sheet layers",
                         "1",
                         Patterns::Integer(1, 16),
@@ -138,6 +142,8 @@ namespace LoadedPin
     options.n_pin_layers          = n_pin_layers;
     options.n_arc_end_refinements = n_arc_end_refinements;
     options.arc_end_angle         = arc_end_angle;
+    options.size_ratio_exponent   = size_ratio_exponent;
+    options.interior_perturbation = interior_perturbation;
     return options;
   }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <loaded_pin/pin_mesh.h>
 #include <vector>
 
@@ -192,9 +193,10 @@ namespace LoadedPin
   {
     AssertThrow(hole_radius > 0.,
                 ExcMessage("Geometry: 'Hole radius' must be positive."));
-    AssertThrow(clearance >= 0. && clearance < 0.5 * hole_radius,
-                ExcMessage("Geometry: 'Clearance' must be at least 0 and "
-                           "less than half the hole radius."));
+    AssertThrow(clearance >= -0.01 * hole_radius &&
+                  clearance < 0.5 * hole_radius,
+                ExcMessage("Geometry: 'Clearance' must be at least -1 % "
+                           "and less than half of the hole radius."));
     AssertThrow(outer_radius > hole_radius,
                 ExcMessage("Geometry: 'Hole radius' must be less than 'Outer "
                            "radius': the hole must lie inside the lug."));
@@ -293,5 +295,18 @@ namespace LoadedPin
       "Mesh: 'Number of global refinements', 'Number of sheet layers', "
       "'Number of pin layers', 'Number of contact refinements', 'Number of "
       "arc end refinements' and 'Grading factor'");
+    // The variations of the common mesh entries (see
+    // Common::Geometry::MeshParameters::apply_variations()).
+    Common::Geometry::refine_toward<3>(
+      tria,
+      [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
+      std::abs(options.size_ratio_exponent),
+      options.grading_factor,
+      "Mesh: 'Contact size ratio' with the other refinement entries",
+      options.size_ratio_exponent > 0 ? MaterialIds::sheet : MaterialIds::pin);
+    Common::Geometry::perturb_interior_vertices(
+      tria,
+      options.interior_perturbation,
+      "Mesh: 'Interior node perturbation'");
   }
 } // namespace LoadedPin

@@ -24,7 +24,8 @@ namespace LoadedPin
     /** Radius of the hole. */
     double hole_radius = 50.;
     /** Radial clearance between hole and pin: the pin's radius is
-     * hole_radius - clearance. */
+     * hole_radius - clearance; negative for an interference fit (at most
+     * 1 % of the hole radius). */
     double clearance = 0.;
     /** Radius of the lug's outer arc (x >= 0), also half the sheet's
      * width: the quarter model spans 0 <= y <= outer_radius. */
@@ -49,7 +50,8 @@ namespace LoadedPin
     /**
      * @brief Throw with a one-line message naming the entry if the
      * dimensions do not make the lug and pin of the mesh: positive sizes,
-     * 0 <= clearance < hole_radius / 2, hole_radius < outer_radius <
+     * -hole_radius / 100 <= clearance < hole_radius / 2,
+     * hole_radius < outer_radius <
      * sheet_length, pin_length >= sheet_thickness.
      */
     void
@@ -119,6 +121,13 @@ namespace LoadedPin
     /** Angle theta = 180 - atan2(y, x) of that line about the hole
      * centre (degrees, 0 to 180: 0 faces the clamp, 180 the load). */
     double arc_end_angle = 90.;
+    /** Base-2 logarithm of the ratio of the pin's cell size at the
+     * contact to the sheet's, -3 to 3: positive values refine the sheet
+     * that many more times toward the contact, negative ones the pin. */
+    int size_ratio_exponent = 0;
+    /** Largest random shift of the interior vertices, as a fraction of
+     * the shortest edge at each (0 to 0.3, dimensionless). */
+    double interior_perturbation = 0.;
   };
 
   /**

@@ -89,8 +89,24 @@ namespace Punch3d
                         "200",
                         Patterns::Double(0.),
                         "Height of the foundation. Units: mm.");
+      prm.declare_entry("Initial gap",
+                        "0",
+                        Patterns::Double(),
+                        "Distance by which the punch starts above the "
+                        "foundation (negative: an overlap, the punch starts "
+                        "pressed into it), for tests of initial gaps; 0 for "
+                        "the benchmark. At most 1 % of the punch radius "
+                        "either way. Units: mm.");
     }
     prm.leave_subsection();
+  }
+
+
+
+  double
+  GeometryParameters::punch_base() const
+  {
+    return foundation_height + initial_gap;
   }
 
 
@@ -116,8 +132,12 @@ namespace Punch3d
         Common::IO::get_positive_length(prm, s, "Foundation radius");
       foundation_height =
         Common::IO::get_positive_length(prm, s, "Foundation height");
+      initial_gap = prm.get_double("Initial gap");
     }
     prm.leave_subsection();
+    AssertThrow(std::abs(initial_gap) <= 0.01 * punch_radius,
+                ExcMessage("Geometry: 'Initial gap' must be at most 1 % of "
+                           "the punch radius either way."));
     AssertThrow((fillet_radius > 0. && fillet_radius < 0.4 * punch_radius &&
                  3. * fillet_radius < punch_height) ||
                   (hemispherical_end() && punch_height > 1.5 * punch_radius),
@@ -143,7 +163,9 @@ namespace Punch3d
          "the contact strip (the foundation top under the punch and the "
          "punch's flat face and fillet)",
          4,
-         12});
+         12,
+         "punch",
+         "foundation"});
       prm.declare_entry("Number of edge refinements",
                         "3",
                         Patterns::Integer(0, 12),

@@ -36,6 +36,14 @@ namespace Punch3d
     double foundation_radius;
     /** Foundation height (mm). */
     double foundation_height;
+    /** Distance of the punch above the foundation at the start,
+     * negative for an overlap (mm). */
+    double initial_gap;
+
+    /** @brief Height of the punch's lowest point at the start,
+     * foundation_height + initial_gap (mm). */
+    double
+    punch_base() const;
 
     /** @brief Whether the fillet radius equals the punch radius: the
      * punch then ends in a hemisphere, a Hertz point contact (a

@@ -41,13 +41,15 @@ namespace Punch3d
                          Triangulation<2>         &foundation,
                          Triangulation<2>         &punch)
     {
-      const double   a   = geometry.punch_radius;
-      const double   Hp  = geometry.punch_height;
-      const double   rho = geometry.fillet_radius;
-      const double   Rf  = geometry.foundation_radius;
-      const double   Hf  = geometry.foundation_height;
-      const double   b   = a - rho;
-      const Point<2> centre(b, Hf + rho);
+      const double a   = geometry.punch_radius;
+      const double Hp  = geometry.punch_height;
+      const double rho = geometry.fillet_radius;
+      const double Rf  = geometry.foundation_radius;
+      const double Hf  = geometry.foundation_height;
+      const double b   = a - rho;
+      // The punch's base (Hf without an initial gap).
+      const double   Hb = geometry.punch_base();
+      const Point<2> centre(b, Hb + rho);
 
       const double coarse_size = 0.5 * a;
       GridGenerator::subdivided_hyper_rectangle(
@@ -62,10 +64,10 @@ namespace Punch3d
       std::vector<std::vector<unsigned int>> cell_vertices;
       if (carrier_only)
         {
-          vertices      = {{0., Hf + 0.5 * Hp},
-                           {a, Hf + 0.5 * Hp},
-                           {0., Hf + Hp},
-                           {a, Hf + Hp}};
+          vertices      = {{0., Hb + 0.5 * Hp},
+                           {a, Hb + 0.5 * Hp},
+                           {0., Hb + Hp},
+                           {a, Hb + Hp}};
           cell_vertices = {{0, 1, 2, 3}};
         }
       else if (geometry.hemispherical_end())
@@ -75,20 +77,20 @@ namespace Punch3d
           // two cells above it. Vertices 0 to 2: the arc from the axis to
           // the side; 3 to 5: the inner cell's corners; 6: the centre;
           // then the rows z_mid and the top, from the axis outward.
-          const double z_mid = Hf + 0.5 * (a + Hp);
-          vertices           = {{0., Hf},
-                                {s * a, Hf + a - s * a},
-                                {a, Hf + a},
-                                {0., Hf + 0.5 * a},
-                                {0.5 * a, Hf + 0.5 * a},
-                                {0.5 * a, Hf + a},
-                                {0., Hf + a},
+          const double z_mid = Hb + 0.5 * (a + Hp);
+          vertices           = {{0., Hb},
+                                {s * a, Hb + a - s * a},
+                                {a, Hb + a},
+                                {0., Hb + 0.5 * a},
+                                {0.5 * a, Hb + 0.5 * a},
+                                {0.5 * a, Hb + a},
+                                {0., Hb + a},
                                 {0., z_mid},
                                 {0.5 * a, z_mid},
                                 {a, z_mid},
-                                {0., Hf + Hp},
-                                {0.5 * a, Hf + Hp},
-                                {a, Hf + Hp}};
+                                {0., Hb + Hp},
+                                {0.5 * a, Hb + Hp},
+                                {a, Hb + Hp}};
           cell_vertices      = {{0, 1, 3, 4},
                                 {1, 2, 4, 5},
                                 {3, 4, 6, 5},
@@ -101,23 +103,23 @@ namespace Punch3d
         {
           // Vertices 0 to 3: the axis, the start, middle and end of the
           // fillet; then four rows from the axis outward.
-          const double z_mid = Hf + 0.5 * (2.5 * rho + Hp);
-          vertices           = {{0., Hf},
-                                {b, Hf},
-                                {b + s * rho, Hf + rho - s * rho},
-                                {a, Hf + rho},
-                                {0., Hf + 2. * rho},
-                                {b - 1.5 * rho, Hf + 2. * rho},
-                                {b - 0.25 * rho, Hf + 2.25 * rho},
-                                {a, Hf + 2.5 * rho},
+          const double z_mid = Hb + 0.5 * (2.5 * rho + Hp);
+          vertices           = {{0., Hb},
+                                {b, Hb},
+                                {b + s * rho, Hb + rho - s * rho},
+                                {a, Hb + rho},
+                                {0., Hb + 2. * rho},
+                                {b - 1.5 * rho, Hb + 2. * rho},
+                                {b - 0.25 * rho, Hb + 2.25 * rho},
+                                {a, Hb + 2.5 * rho},
                                 {0., z_mid},
                                 {b - 1.5 * rho, z_mid},
                                 {b - 0.25 * rho, z_mid},
                                 {a, z_mid},
-                                {0., Hf + Hp},
-                                {b - 1.5 * rho, Hf + Hp},
-                                {b - 0.25 * rho, Hf + Hp},
-                                {a, Hf + Hp}};
+                                {0., Hb + Hp},
+                                {b - 1.5 * rho, Hb + Hp},
+                                {b - 0.25 * rho, Hb + Hp},
+                                {a, Hb + Hp}};
           cell_vertices      = {{0, 1, 4, 5},
                                 {1, 2, 5, 6},
                                 {2, 3, 6, 7},
@@ -165,7 +167,7 @@ namespace Punch3d
                 const Point<2> c = face->center();
                 if (std::abs(c[0]) < tolerance)
                   face->set_boundary_id(BoundaryIds::punch_axis);
-                else if (std::abs(c[1] - Hf - Hp) < tolerance)
+                else if (std::abs(c[1] - Hb - Hp) < tolerance)
                   face->set_boundary_id(BoundaryIds::punch_top);
                 else if (std::abs(c[0] - a) < tolerance || carrier_only)
                   face->set_boundary_id(BoundaryIds::punch_side);
@@ -271,6 +273,10 @@ namespace Punch3d
       "'Number of contact refinements', "
       "'Number of edge refinements' and "
       "'Grading factor'");
+    parameters.mesh.apply_variations<dim>(triangulation,
+                                          band(0., sphere ? edge_end : a),
+                                          MaterialIds::punch,
+                                          MaterialIds::foundation);
   }
 
 

@@ -112,8 +112,8 @@ namespace Punch3d
         ComponentMask fixed(dim, true);
         fixed.set(1, false);
         Point<dim> top_on_axis;
-        top_on_axis[1] = parameters.geometry.foundation_height +
-                         parameters.geometry.punch_height;
+        top_on_axis[1] =
+          parameters.geometry.punch_base() + parameters.geometry.punch_height;
         Common::Physics::add_rigid_translation_constraints(
           dof_handler,
           MaterialIds::punch,
@@ -197,15 +197,15 @@ namespace Punch3d
     const auto                   &g   = parameters.geometry;
     const double                  a   = g.punch_radius;
     const double                  rho = g.fillet_radius;
-    const double                  Hf  = g.foundation_height;
+    const double                  Hb  = g.punch_base();
     Common::Contact::RigidProfile profile;
     if (a - rho > 0.)
-      profile.add_line(Point<2>(0., Hf), Point<2>(a - rho, Hf));
-    profile.add_arc(Point<2>(a - rho, Hf + rho), rho, -0.5 * numbers::PI, 0.);
-    profile.add_line(Point<2>(a, Hf + rho), Point<2>(a, Hf + g.punch_height));
+      profile.add_line(Point<2>(0., Hb), Point<2>(a - rho, Hb));
+    profile.add_arc(Point<2>(a - rho, Hb + rho), rho, -0.5 * numbers::PI, 0.);
+    profile.add_line(Point<2>(a, Hb + rho), Point<2>(a, Hb + g.punch_height));
 
     Point<dim> top_on_axis;
-    top_on_axis[1] = Hf + g.punch_height;
+    top_on_axis[1] = Hb + g.punch_height;
     std::array<types::global_dof_index, dim> reference_node_dofs;
     for (unsigned int c = 0; c < dim; ++c)
       reference_node_dofs[c] =

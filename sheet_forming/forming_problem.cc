@@ -87,6 +87,10 @@ namespace SheetForming
                                              BoundaryIds::surface);
             }
       }
+    Common::Geometry::perturb_interior_vertices(
+      sheet,
+      parameters.mesh.interior_perturbation,
+      "Mesh: 'Interior node perturbation'");
     // Carriers left of the axis, clear of the sheet and the tools' paths.
     const double size = g.thickness;
     GridGenerator::hyper_rectangle(punch,

@@ -128,6 +128,14 @@ namespace SheetForming
                         "120",
                         Patterns::Integer(4, 4000),
                         "Cells along the sheet's half-length (uniform).");
+      prm.declare_entry(
+        "Interior node perturbation",
+        "0",
+        Patterns::Double(0., 0.3),
+        "Move every vertex inside the sheet in a random direction by up to "
+        "this fraction of the shortest edge at it (fixed seed: the same mesh "
+        "at every run), for tests of distorted meshes; 0 for the regular "
+        "mesh. Dimensionless, 0 to 0.3.");
     }
     prm.leave_subsection();
   }
@@ -143,6 +151,7 @@ namespace SheetForming
       n_cells_thickness =
         prm.get_integer("Number of cells through the thickness");
       n_cells_length = prm.get_integer("Number of cells along the length");
+      interior_perturbation = prm.get_double("Interior node perturbation");
     }
     prm.leave_subsection();
   }

@@ -73,6 +73,9 @@ namespace SheetForming
     /** Cells through the thickness and along the half-length. */
     unsigned int n_cells_thickness;
     unsigned int n_cells_length;
+    /** Largest random shift of the sheet's interior vertices, as a
+     * fraction of the shortest edge at each (0 to 0.3, dimensionless). */
+    double interior_perturbation;
   };
 
   /** Subsection "Release" and the measurement of the angles. */

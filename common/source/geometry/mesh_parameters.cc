@@ -1,4 +1,7 @@
 #include <common/geometry/mesh_parameters.h>
+#include <common/geometry/two_body_meshes.h>
+
+#include <cstdlib>
 
 namespace Common
 {
@@ -33,6 +36,25 @@ namespace Common
                         "A cell is refined if its centre lies closer to the "
                         "target than this many cell diameters. "
                         "Dimensionless.");
+      prm.declare_entry(
+        "Contact size ratio",
+        "1",
+        Patterns::Selection("1/8|1/4|1/2|1|2|4|8"),
+        "Ratio of the " + description.first_body +
+          "'s cell size at the contact to the " + description.second_body +
+          "'s, for tests of non-matching meshes: 2, 4 or 8 refine the " +
+          description.second_body +
+          "'s cells near the contact 1, 2 or 3 more times, 1/2, 1/4 or 1/8 "
+          "the " +
+          description.first_body + "'s. Dimensionless.");
+      prm.declare_entry(
+        "Interior node perturbation",
+        "0",
+        Patterns::Double(0., 0.3),
+        "Move every vertex on no boundary in a random direction by up to "
+        "this fraction of the shortest edge at it (fixed seed: the same mesh "
+        "at every run), for tests of distorted meshes; 0 for the regular "
+        "mesh. Dimensionless, 0 to 0.3.");
     }
 
 
@@ -44,6 +66,52 @@ namespace Common
       n_global_refinements  = prm.get_integer("Number of global refinements");
       n_contact_refinements = prm.get_integer("Number of contact refinements");
       grading_factor        = prm.get_double("Grading factor");
+      const std::string ratio = prm.get("Contact size ratio");
+      size_ratio_exponent     = ratio == "1/8" ? -3 :
+                                ratio == "1/4" ? -2 :
+                                ratio == "1/2" ? -1 :
+                                ratio == "2"   ? 1 :
+                                ratio == "4"   ? 2 :
+                                ratio == "8"   ? 3 :
+                                                 0;
+      interior_perturbation   = prm.get_double("Interior node perturbation");
     }
+
+
+
+    template <int dim>
+    void
+    MeshParameters::apply_variations(
+      Triangulation<dim>                              &tria,
+      const std::function<double(const Point<dim> &)> &contact_distance,
+      const types::material_id                         first_body,
+      const types::material_id                         second_body) const
+    {
+      refine_toward<dim>(tria,
+                         contact_distance,
+                         std::abs(size_ratio_exponent),
+                         grading_factor,
+                         "Mesh: 'Contact size ratio' with the other "
+                         "refinement entries",
+                         size_ratio_exponent > 0 ? second_body : first_body);
+      perturb_interior_vertices(tria,
+                                interior_perturbation,
+                                "Mesh: 'Interior node perturbation'");
+    }
+
+
+
+    template void
+    MeshParameters::apply_variations(
+      Triangulation<2> &,
+      const std::function<double(const Point<2> &)> &,
+      const types::material_id,
+      const types::material_id) const;
+    template void
+    MeshParameters::apply_variations(
+      Triangulation<3> &,
+      const std::function<double(const Point<3> &)> &,
+      const types::material_id,
+      const types::material_id) const;
   } // namespace Geometry
 } // namespace Common

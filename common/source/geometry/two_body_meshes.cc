@@ -1,11 +1,15 @@
 #include <common/geometry/two_body_meshes.h>
 
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/manifold.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
+#include <random>
 #include <string>
 
 namespace Common
@@ -107,6 +111,75 @@ namespace Common
                                " cells (" + std::to_string(n_cells) +
                                " or more): use fewer refinements."));
       }
+
+
+
+      /**
+       * Cells that n_passes - pass graded passes make of the part
+       * [lo, hi] of a cell with the straight-sided vertices @p v (the
+       * reference box [0, 1]^dim): 1 if the part is not flagged, else the
+       * sum over its 2^dim children. Ignores the refinements that keep one
+       * hanging node per face, so the count is a lower bound. Stops when
+       * it exceeds @p budget.
+       */
+      template <int dim>
+      std::uint64_t
+      predicted_cells(
+        const std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> &v,
+        const Point<dim>                                                   &lo,
+        const Point<dim>                                                   &hi,
+        const unsigned int                               pass,
+        const unsigned int                               n_passes,
+        const double                                     factor,
+        const std::function<double(const Point<dim> &)> &distance,
+        const std::uint64_t                              budget)
+      {
+        if (pass == n_passes)
+          return 1;
+        const auto map = [&v](const Point<dim> &xi) {
+          Point<dim> x;
+          for (unsigned int i = 0; i < v.size(); ++i)
+            x += GeometryInfo<dim>::d_linear_shape_function(xi, i) * v[i];
+          return x;
+        };
+        // The diameter as deal.II's: the longest diagonal.
+        double diameter = 0.;
+        for (unsigned int c = 0; c < (1u << (dim - 1)); ++c)
+          {
+            Point<dim> corner, opposite;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const bool upper = d < dim - 1 && (c >> d) & 1u;
+                corner[d]        = upper ? hi[d] : lo[d];
+                opposite[d]      = upper ? lo[d] : hi[d];
+              }
+            diameter = std::max(diameter, map(corner).distance(map(opposite)));
+          }
+        const Point<dim> middle = 0.5 * (lo + hi);
+        if (!(distance(map(middle)) < factor * diameter))
+          return 1;
+        std::uint64_t n = 0;
+        for (unsigned int child = 0; child < (1u << dim) && n <= budget;
+             ++child)
+          {
+            Point<dim> child_lo, child_hi;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const bool upper = (child >> d) & 1u;
+                child_lo[d]      = upper ? middle[d] : lo[d];
+                child_hi[d]      = upper ? hi[d] : middle[d];
+              }
+            n += predicted_cells(v,
+                                 child_lo,
+                                 child_hi,
+                                 pass + 1,
+                                 n_passes,
+                                 factor,
+                                 distance,
+                                 budget - n);
+          }
+        return n;
+      }
     } // namespace
 
 
@@ -136,13 +209,48 @@ namespace Common
                   const std::function<double(const Point<dim> &)> &distance,
                   const unsigned int                               n_passes,
                   const double                                     factor,
-                  const std::string                               &entries)
+                  const std::string                               &entries,
+                  const types::material_id                         material_id)
     {
+      // All passes at once first, on straight-sided cells without the
+      // smoothing refinements (a lower bound): a pass that refines nearly
+      // every cell is refused before it runs, not after it made a mesh
+      // just under the limit.
+      std::uint64_t predicted = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          if (material_id != numbers::invalid_material_id &&
+              cell->material_id() != material_id)
+            {
+              ++predicted;
+              continue;
+            }
+          std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> v;
+          for (const unsigned int i : cell->vertex_indices())
+            v[i] = cell->vertex(i);
+          Point<dim> lo, hi;
+          for (unsigned int d = 0; d < dim; ++d)
+            hi[d] = 1.;
+          predicted += predicted_cells<dim>(v,
+                                            lo,
+                                            hi,
+                                            0,
+                                            n_passes,
+                                            factor,
+                                            distance,
+                                            max_active_cells<dim>);
+          if (predicted > max_active_cells<dim>)
+            break;
+        }
+      check_mesh_size<dim>(predicted, entries);
+
       for (unsigned int pass = 0; pass < n_passes; ++pass)
         {
           std::uint64_t n_flagged = 0;
           for (const auto &cell : tria.active_cell_iterators())
-            if (distance(cell->center()) < factor * cell->diameter())
+            if ((material_id == numbers::invalid_material_id ||
+                 cell->material_id() == material_id) &&
+                distance(cell->center()) < factor * cell->diameter())
               {
                 cell->set_refine_flag();
                 ++n_flagged;
@@ -154,6 +262,136 @@ namespace Common
                                entries);
           tria.execute_coarsening_and_refinement();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    perturb_interior_vertices(Triangulation<dim> &tria,
+                              const double        fraction,
+                              const std::string  &entry)
+    {
+      AssertThrow(fraction >= 0. && fraction <= 0.3,
+                  ExcMessage(entry + " must lie in [0, 0.3]."));
+      if (fraction == 0.)
+        return;
+
+      // Vertices that stay: those on the boundary. Hanging vertices, with
+      // the level of their parent edge or face (coarsest first), are put
+      // back at its middle afterwards.
+      const unsigned int  n_vertices = tria.n_vertices();
+      std::vector<bool>   fixed(n_vertices, false);
+      std::vector<double> shortest_edge(n_vertices,
+                                        std::numeric_limits<double>::max());
+      std::vector<std::pair<unsigned int, unsigned int>> hanging; // level, v
+      std::map<unsigned int, std::vector<unsigned int>>  parent_vertices;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                fixed[cell->face(f)->vertex_index(v)] = true;
+          for (unsigned int l = 0; l < cell->n_lines(); ++l)
+            {
+              const auto line = cell->line(l);
+              if (line->has_children())
+                {
+                  const unsigned int v = line->child(0)->vertex_index(1);
+                  hanging.emplace_back(cell->level(), v);
+                  parent_vertices[v] = {line->vertex_index(0),
+                                        line->vertex_index(1)};
+                }
+              else
+                for (const unsigned int v : {0u, 1u})
+                  shortest_edge[line->vertex_index(v)] =
+                    std::min(shortest_edge[line->vertex_index(v)],
+                             line->diameter());
+            }
+          if constexpr (dim == 3)
+            for (const unsigned int f : cell->face_indices())
+              {
+                const auto face = cell->face(f);
+                if (face->has_children())
+                  {
+                    const unsigned int v = face->child(0)->vertex_index(3);
+                    hanging.emplace_back(cell->level(), v);
+                    parent_vertices[v] = {face->vertex_index(0),
+                                          face->vertex_index(1),
+                                          face->vertex_index(2),
+                                          face->vertex_index(3)};
+                  }
+              }
+        }
+      for (const auto &h : hanging)
+        fixed[h.second] = true;
+
+      // New positions, drawn in the order of the vertex indices: uniform
+      // in the ball of radius fraction * shortest edge.
+      std::vector<Point<dim>>                vertices = tria.get_vertices();
+      std::mt19937                           generator(5489u);
+      std::uniform_real_distribution<double> uniform(-1., 1.);
+      const std::vector<bool>               &used = tria.get_used_vertices();
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        if (used[v] && !fixed[v] &&
+            shortest_edge[v] < std::numeric_limits<double>::max())
+          {
+            Tensor<1, dim> shift;
+            do
+              for (unsigned int d = 0; d < dim; ++d)
+                shift[d] = uniform(generator);
+            while (shift.norm_square() > 1.);
+            vertices[v] += fraction * shortest_edge[v] * shift;
+          }
+      std::sort(hanging.begin(), hanging.end());
+      for (const auto &h : hanging)
+        {
+          Point<dim> middle;
+          for (const unsigned int p : parent_vertices[h.second])
+            middle += vertices[p];
+          vertices[h.second] =
+            middle / static_cast<double>(parent_vertices[h.second].size());
+        }
+
+      std::vector<bool> moved(n_vertices, false);
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (!moved[cell->vertex_index(v)])
+            {
+              cell->vertex(v)              = vertices[cell->vertex_index(v)];
+              moved[cell->vertex_index(v)] = true;
+            }
+
+      // Curved interior descriptions (transfinite interpolation) would
+      // pull the moved vertices back to charts built on the coarse cells,
+      // whose vertices may have moved: the interior, and boundaries
+      // described by a transfinite interpolation, become straight-sided;
+      // the other boundary manifolds (circles, cylinders) stay.
+      const auto straighten = [&tria](const auto &object) {
+        const types::manifold_id id = object->manifold_id();
+        if (id == numbers::flat_manifold_id)
+          return;
+        if (!object->at_boundary() ||
+            dynamic_cast<const TransfiniteInterpolationManifold<dim> *>(
+              &tria.get_manifold(id)) != nullptr)
+          object->set_manifold_id(numbers::flat_manifold_id);
+      };
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          cell->set_manifold_id(numbers::flat_manifold_id);
+          for (unsigned int l = 0; l < cell->n_lines(); ++l)
+            straighten(cell->line(l));
+          if constexpr (dim == 3)
+            for (const unsigned int f : cell->face_indices())
+              straighten(cell->face(f));
+        }
+
+      for (const auto &cell : tria.active_cell_iterators())
+        AssertThrow(cell->measure() > 0.,
+                    ExcMessage(entry + " inverts a cell at " +
+                               Utilities::to_string(cell->center()[0]) + ", " +
+                               Utilities::to_string(cell->center()[1]) +
+                               ": use a smaller value."));
     }
 
 
@@ -209,7 +447,12 @@ namespace Common
                   const std::function<double(const Point<2> &)> &,
                   const unsigned int,
                   const double,
-                  const std::string &);
+                  const std::string &,
+                  const types::material_id);
+    template void
+    perturb_interior_vertices(Triangulation<2> &,
+                              const double,
+                              const std::string &);
     template void
     refine_global_checked(Triangulation<3> &,
                           const unsigned int,
@@ -219,7 +462,12 @@ namespace Common
                   const std::function<double(const Point<3> &)> &,
                   const unsigned int,
                   const double,
-                  const std::string &);
+                  const std::string &,
+                  const types::material_id);
+    template void
+    perturb_interior_vertices(Triangulation<3> &,
+                              const double,
+                              const std::string &);
     template double
     smallest_cell_near(const Triangulation<2> &,
                        const std::function<double(const Point<2> &)> &);

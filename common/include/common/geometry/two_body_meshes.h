@@ -71,6 +71,10 @@ namespace Common
      * @param[in] distance Distance of a point to the region (mm).
      * @param[in] entries The parameter entries that set the refinement, as
      * the error message names them.
+     * @param[in] material_id Refine only the cells of this body (all
+     * cells if invalid). Bodies joined by join_bodies() share no vertices,
+     * so refining one of them leaves the other's cells at the contact
+     * unchanged: the meshes across the contact no longer match.
      * @throws dealii::ExcMessage naming @p entries if the mesh would be
      * too large.
      */
@@ -81,7 +85,33 @@ namespace Common
       const std::function<double(const dealii::Point<dim> &)> &distance,
       const unsigned int                                       n_passes,
       const double                                             factor,
-      const std::string                                       &entries);
+      const std::string                                       &entries,
+      const dealii::types::material_id                         material_id =
+        dealii::numbers::invalid_material_id);
+
+    /**
+     * @brief Move every vertex that lies on no boundary in a random
+     * direction by up to @p fraction of the shortest active edge at it,
+     * for tests of robustness to distorted cells. The random numbers come
+     * from a fixed seed, so that every run and every MPI rank makes the
+     * same mesh. Boundary vertices (the contact surfaces among them) stay;
+     * hanging vertices are put back at the middle of their parent edge
+     * (and, in 3D, of their parent face), so the mesh stays conforming.
+     * The interior cells, lines and faces, and boundary objects described
+     * by a transfinite interpolation, become straight-sided (flat
+     * manifold id); the other boundary manifolds stay. Call after the last
+     * refinement.
+     * @param[in] fraction Largest shift over the shortest adjacent edge,
+     * 0 to 0.3 (dimensionless); 0 leaves the mesh unchanged.
+     * @param[in] entry The parameter entry that sets @p fraction, as the
+     * error message names it.
+     * @throws dealii::ExcMessage naming @p entry if a cell is inverted.
+     */
+    template <int dim>
+    void
+    perturb_interior_vertices(dealii::Triangulation<dim> &tria,
+                              const double                fraction,
+                              const std::string          &entry);
 
     /**
      * @brief Smallest cell diameter near a region: the minimum over cells
