@@ -270,6 +270,50 @@ def study_section(study, results):
     return out
 
 
+def robustness_section(results):
+    """The robustness sweep (scripts/robustness_sweep.py, in
+    results/robustness_sweep) and the fuzzed-input counts
+    (scripts/fuzz_prm.py --summary results/fuzz_summary.json)."""
+    out = ["<h2>Robustness: the neighbourhood of every case, and fuzzed input</h2>",
+           "<p>Each application's coarse case varied one entry at a time (friction, stiffness "
+           "ratio, rigid bodies, load steps, a first step of 1e-6 of the load, Q1/Q2, penalty, "
+           "non-matching and perturbed meshes, initial gaps and overlaps). A run converges (Newton "
+           "iterations, most in a step, cutbacks, and the change of the application's headline "
+           "result against the coarse case) or fails with one line naming the cause and no "
+           "result files; a crash, a NaN, a hang or a force balance above 1e-6 is a defect.</p>"]
+    sweep = os.path.join(results, "robustness_sweep", "robustness_sweep.json")
+    if not os.path.exists(sweep):
+        out.append("<p class='note'>sweep not run (python3 scripts/robustness_sweep.py)</p>")
+    else:
+        with open(sweep) as f:
+            data = json.load(f)
+        out.append("<p>" + html.escape(", ".join(
+            f"{n} {s}" for s, n in sorted(data["counts"].items()))) + ".</p>")
+        runs = [{k: str(v) for k, v in run.items()} for run in data["runs"]]
+        out += generic_table(runs, [
+            ("app", "application"), ("variation", "variation"), ("status", "status"),
+            ("newton_iterations", "Newton"), ("max_iterations_per_step", "most per step"),
+            ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
+            ("change_vs_coarse_percent", "headline change [%]"), ("detail", "detail")])
+    fuzz_file = os.path.join(results, "fuzz_summary.json")
+    if not os.path.exists(fuzz_file):
+        out.append("<p class='note'>fuzzing not run (python3 scripts/fuzz_prm.py --summary "
+                   "results/fuzz_summary.json)</p>")
+    else:
+        with open(fuzz_file) as f:
+            fuzz = json.load(f)
+        rows = [dict(app=app, **{k: str(v) for k, v in counts.items()})
+                for app, counts in fuzz.items()]
+        out.append("<p>Fuzzed parameter files: seeded mutations of each production file; "
+                   "each must be refused with one line naming the entry, or run to finite "
+                   "results.</p>")
+        out += generic_table(rows, [("app", "application"), ("mutations", "mutations"),
+                                    ("rejected", "refused"), ("ran", "ran"),
+                                    ("running", "running at the time limit"),
+                                    ("defects", "defects"), ("wall_time_s", "wall [s]")])
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "results"))
@@ -299,6 +343,8 @@ def main():
         if not args.only:
             for study in meta.get("studies", []):
                 body += study_section(study, args.results)
+    if not args.only:
+        body += robustness_section(args.results)
     unknown = [c for c in args.only or [] if c not in known]
     if unknown:
         sys.exit(f"make_report: no such case in any report.json: {', '.join(unknown)}")

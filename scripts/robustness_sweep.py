@@ -26,14 +26,21 @@ follow the robustness issue: friction coefficient mu in {0, 0.05, 0.3, 1, 5}
 where the case has friction; the stiffness ratio of the two bodies from
 1e-4 to 1e4 (where there are two deformable bodies); 1, 2, 5 and 50 load
 steps; a first step of 1e-6 of the load; Q1 and Q2; penalty enforcement at
-three stiffnesses a decade apart. Variations an application cannot express
-with its entries (non-matching meshes, perturbed interior nodes, initial
-gaps of 1e-8 and 1e-3 cells) are listed as 'not available' with the reason.
+three stiffnesses a decade apart; non-matching meshes (cell size ratios
+1/8 to 8 across the contact, Mesh/Contact size ratio); interior nodes moved
+at random by up to 30 % of the cell (Mesh/Interior node perturbation);
+initial gaps and overlaps of 1e-8 and 1e-3 of the smallest contact cell of
+the coarse case (each application's first run). Variations an application
+cannot express are listed as 'not available' with the reason.
 
 Usage:
   python3 scripts/robustness_sweep.py [--apps APP ...] [--build DIR]
       [--work-dir DIR] [--time-limit 120] [--memory-limit 4000]
       [--only NAME ...] [--list]
+
+Each converged run also gives its headline result (HEADLINE) and its change
+against the coarse case in percent: the variations of the mesh, the gaps,
+the load steps and the enforcement should leave it nearly unchanged.
 
 Writes robustness_sweep.csv and robustness_sweep.json into the work
 directory (default results/robustness_sweep) and prints the table; exits
@@ -58,6 +65,17 @@ fuzz = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(fuzz)
 
 MAX_ITERATIONS_PER_STEP = 15
+
+# One result of each application's summary.json (section, key) that every
+# converged variation reports as its change against the coarse case: a
+# variation that should not change the answer (meshes, gaps, load steps,
+# enforcement) shows here if it does.
+HEADLINE = {
+    "cgs_roller": ("results", "peak_pressure_MPa"),
+    "punch3d": ("results", "pressure_at_centre_MPa"),
+    "loaded_pin": ("results", "pin_centre_ux_mm"),
+    "sheet_forming": ("results", "angle_after_release_deg"),
+}
 FORCE_BALANCE_TOLERANCE = 1e-6
 
 
@@ -106,19 +124,40 @@ RATIOS = [1e-4, 1e-2, 1, 1e2, 1e4]
 STEPS = [1, 2, 5, 50]
 PENALTIES = [1e5, 1e6, 1e7]
 
-NOT_AVAILABLE_MESH = ("non-matching meshes and perturbed interior nodes",
-                      "the meshes are generated from the geometry entries; no entry "
-                      "changes the size ratio across the contact or moves interior nodes")
-NOT_AVAILABLE_GAP = ("initial gaps and overlaps of 1e-8 and 1e-3 cells",
-                     "no entry offsets the bodies: the geometry places them in contact")
+SIZE_RATIOS = ["1/8", "1/2", "2", "8"]
+GAPS = [1e-8, -1e-8, 1e-3, -1e-3]
+# The placeholder of an initial gap in cells: replaced by the value times
+# the smallest cell at the contact of the application's first run (the
+# coarse case without variation, "coarse case").
+CELL = "cells at the contact"
+
+
+def mesh_variations():
+    """Non-matching meshes (Mesh/Contact size ratio) and perturbed
+    interior nodes (Mesh/Interior node perturbation, 30 % of the cell)."""
+    return ([(f"contact size ratio {r}", [("Mesh", "Contact size ratio", r)])
+             for r in SIZE_RATIOS]
+            + [("interior nodes perturbed 30 %",
+                [("Mesh", "Interior node perturbation", "0.3")])])
+
+
+def gap_variations(path, key, sign=1.):
+    """Initial gaps (positive) and overlaps of 1e-8 and 1e-3 of the contact
+    cell size, set by the entry path/key (sign -1 where the entry is an
+    overlap)."""
+    return [(f"initial {'gap' if g > 0 else 'overlap'} {abs(g):g} cell",
+             [(path, key, (sign * g, CELL))]) for g in GAPS]
 
 
 def standard(first=None, second=None, channel="Load factor", value=1., n_steps=1,
-             with_rigid=()):
-    """The variations of an application with a load factor: friction,
-    stiffness ratio (first/second: the material subsections of the two
-    bodies), load steps, a tiny first step, Q1/Q2 and penalty."""
-    table = [(f"mu {mu:g}", friction(mu)) for mu in MUS]
+             with_rigid=(), gap=()):
+    """The variations of an application with a load factor: the coarse case
+    itself, friction, stiffness ratio (first/second: the material
+    subsections of the two bodies), load steps, a tiny first step, Q1/Q2,
+    penalty, non-matching and perturbed meshes and the initial gaps of
+    gap (gap_variations())."""
+    table = [("coarse case", [])]
+    table += [(f"mu {mu:g}", friction(mu)) for mu in MUS]
     if first and second:
         table += [(f"E ratio {r:g}", moduli(first, second, r)) for r in RATIOS]
     table += list(with_rigid)
@@ -126,47 +165,70 @@ def standard(first=None, second=None, channel="Load factor", value=1., n_steps=1
     table.append(("first step 1e-6 of the load", tiny_first_step(channel, value, n_steps)))
     table += [(f"Q{p}", degree(p)) for p in (1, 2)]
     table += [(f"penalty {k:g} MPa/mm", penalty(k)) for k in PENALTIES]
+    table += mesh_variations() + list(gap)
     return table
 
 
 VARIATIONS = {
     "cgs_roller": {
-        "runs": standard("Roller material", "Block material", n_steps=5),
-        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
-                          ("rigid roller", "cgs_roller models both bodies as elastic")],
+        "runs": standard("Roller material", "Block material", n_steps=5,
+                         gap=gap_variations("Geometry", "Initial gap")),
+        "not_available": [("rigid roller", "cgs_roller models both bodies as elastic")],
     },
     "punch3d": {
         "runs": standard("Punch material", "Foundation material",
                          with_rigid=[("rigid punch", [("Model", "Punch", "rigid")]),
                                      ("rigid punch surface",
-                                      [("Model", "Punch", "rigid surface")])]),
-        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP],
+                                      [("Model", "Punch", "rigid surface")])],
+                         gap=gap_variations("Geometry", "Initial gap")),
+        "not_available": [],
     },
     "loaded_pin": {
-        "runs": standard("Pin material", "Sheet material"),
-        "not_available": [NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
-                          ("rigid pin", "loaded_pin models both bodies as elastic")],
+        # A gap is a clearance, an overlap an interference fit.
+        "runs": standard("Pin material", "Sheet material",
+                         gap=gap_variations("Geometry", "Clearance")),
+        "not_available": [("rigid pin", "loaded_pin models both bodies as elastic")],
     },
     "sheet_forming": {
         # The coarse forming and release of tests/sheet_forming
         # (forming_release_coarse.sh): 2 x 30 cells over the whole stroke.
         "base": [("Mesh", "Number of cells through the thickness", "2"),
                  ("Mesh", "Number of cells along the length", "30")],
-        "runs": [(f"mu {mu:g}", friction(mu)) for mu in MUS]
+        "runs": [("coarse case", [])]
+        + [(f"mu {mu:g}", friction(mu)) for mu in MUS]
         + [(f"{n} forming steps", steps(n)) for n in STEPS]
         + [("Q2", degree(2) + [("Solid", "Element technology", "displacement")]),
            ("Q1, displacement element", [("Solid", "Element technology",
                                           "displacement")])]
         # Penalty enforcement is frictionless only.
-        + [(f"penalty {k:g} MPa/mm, mu 0", penalty(k) + friction(0)) for k in PENALTIES],
+        + [(f"penalty {k:g} MPa/mm, mu 0", penalty(k) + friction(0)) for k in PENALTIES]
+        + [("interior nodes perturbed 30 %",
+            [("Mesh", "Interior node perturbation", "0.3")])],
         "not_available": [
-            NOT_AVAILABLE_MESH, NOT_AVAILABLE_GAP,
+            ("non-matching meshes", "the tools are rigid analytic surfaces: "
+             "there is one mesh"),
+            ("initial gaps and overlaps", "the specification places the strip on "
+             "the die and the punch on the strip; the tools' positions are the "
+             "benchmark's"),
             ("stiffness ratio of the two bodies", "the tools are rigid"),
             ("first step 1e-6 of the load",
              "the strip rests on the die and lifts off at once; the forming stage "
              "is one channel program, varied by its number of steps")],
     },
 }
+
+
+def resolve(entries, cell_size):
+    """entries with the values (factor, CELL) replaced by factor times
+    cell_size (mm); None if one needs cell_size and it is unknown."""
+    resolved = []
+    for path, key, value in entries:
+        if isinstance(value, tuple):
+            if cell_size is None:
+                return None
+            value = f"{value[0] * cell_size:.17g}"
+        resolved.append((path, key, value))
+    return resolved
 
 
 def prm_text(app, entries):
@@ -249,21 +311,36 @@ def main():
 
     rows, n_defects = [], 0
     for app in args.apps:
+        # The coarse case runs first whenever a selected variation needs its
+        # contact cell size.
         table = [(name, entries) for name, entries in VARIATIONS[app]["runs"]
                  if not args.only or any(o in name for o in args.only)]
+        needs_cell = any(isinstance(v, tuple) for _, entries in table for _, _, v in entries)
+        if needs_cell and all(name != "coarse case" for name, _ in table):
+            table.insert(0, ("coarse case", []))
         if args.list:
             for name, entries in table:
-                print(f"{app}: {name}: " + "; ".join(f"{p}/{k} = {v}" for p, k, v in entries))
+                print(f"{app}: {name}: " + "; ".join(
+                f"{p}/{k} = " + (f"{v[0]:g} {v[1]}" if isinstance(v, tuple) else v)
+                for p, k, v in entries))
             for name, why in VARIATIONS[app]["not_available"]:
                 print(f"{app}: {name}: not available ({why})")
             continue
         executable = os.path.join(args.build, app, app)
         if not os.access(executable, os.X_OK):
             sys.exit(f"robustness_sweep: no executable {executable}; build the target {app}")
+        # The smallest cell at the contact, from the coarse case's summary:
+        # the unit of the initial gaps.
+        cell_size = None
+        coarse_headline = None
         for number, (name, entries) in enumerate(table, 1):
             case_dir = os.path.join(args.work_dir, app, f"{number:02d}")
             shutil.rmtree(case_dir, ignore_errors=True)
             os.makedirs(case_dir)
+            entries = resolve(entries, cell_size)
+            if entries is None:
+                print(f"{app:14s} {name:30s} skipped: the coarse case gave no contact cell size")
+                continue
             with open(os.path.join(case_dir, "case.prm"), "w") as f:
                 f.write(prm_text(app, entries))
             with open(os.path.join(case_dir, "variation.txt"), "w") as f:
@@ -271,20 +348,37 @@ def main():
             code, stopped, progressing, wall = fuzz.run(executable, case_dir,
                                                         args.time_limit, args.memory_limit)
             status, detail, newton = classify(app, case_dir, code, stopped, progressing)
+            headline = None
+            if status == "converged":
+                with open(os.path.join(case_dir, "results", "summary.json")) as f:
+                    summary = json.load(f)
+                section, key = HEADLINE[app]
+                headline = summary.get(section, {}).get(key)
+            if name == "coarse case" and status == "converged":
+                cell_size = summary.get("mesh", {}).get("smallest_cell_in_contact_zone_mm")
+                coarse_headline = headline
+            change = ""
+            if (headline is not None and name != "coarse case"
+                    and coarse_headline not in (None, 0)):
+                change = f"{100. * (headline / coarse_headline - 1.):+.3g}"
             n_defects += status.startswith("DEFECT")
             row = {"app": app, "variation": name, "status": status,
                    "newton_iterations": newton.get("total_iterations", ""),
                    "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
                    "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
+                   "headline": "" if headline is None else headline,
+                   "change_vs_coarse_percent": change,
                    "detail": detail, "case": os.path.relpath(case_dir, ROOT)}
             rows.append(row)
             print(f"{app:14s} {name:30s} {status:22s} it {str(row['newton_iterations']):>5s} "
                   f"max {str(row['max_iterations_per_step']):>3s} cutbacks "
-                  f"{str(row['cutbacks']):>3s} {wall:7.1f} s  {detail[:110]}", flush=True)
+                  f"{str(row['cutbacks']):>3s} {wall:7.1f} s {change:>8s} %  {detail[:100]}",
+                  flush=True)
         for name, why in VARIATIONS[app]["not_available"]:
             rows.append({"app": app, "variation": name, "status": "not available",
                          "newton_iterations": "", "max_iterations_per_step": "",
-                         "cutbacks": "", "wall_time_s": "", "detail": why, "case": ""})
+                         "cutbacks": "", "wall_time_s": "", "headline": "",
+                         "change_vs_coarse_percent": "", "detail": why, "case": ""})
     if args.list:
         return 0
     os.makedirs(args.work_dir, exist_ok=True)
