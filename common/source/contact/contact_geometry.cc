@@ -81,7 +81,9 @@ namespace Common
           primary = std::make_unique<ContactSurface<dim>>(dof_handler,
                                                           mapping,
                                                           primary_id);
-          search  = std::make_unique<ContactSearch<dim>>(*primary, 0.);
+          // Its edges on symmetry planes (primary_parameter_boxes()).
+          primary->symmetrize_normals(constraints);
+          search = std::make_unique<ContactSearch<dim>>(*primary, 0.);
           mortar.reinit(*secondary,
                         *primary,
                         *search,

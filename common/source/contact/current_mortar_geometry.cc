@@ -126,9 +126,14 @@ namespace Common
                                                  needed_rows(*secondary)) :
           std::vector<bool>();
       if (tools.empty())
-        primary = std::make_unique<ContactSurface<dim>>(dof_handler,
-                                                        mapping,
-                                                        primary_id);
+        {
+          primary = std::make_unique<ContactSurface<dim>>(dof_handler,
+                                                          mapping,
+                                                          primary_id);
+          // Its edges on symmetry planes (MortarCoupling's extension of
+          // primary faces past them).
+          primary->symmetrize_normals(constraints);
+        }
       integrate(nullptr);
       pattern = current_pattern();
       accepted_normals.resize(mortar.n_rows());

@@ -23,6 +23,24 @@ namespace Common
        * its measure differs from the whole by less than this fraction. */
       constexpr double coverage_tolerance = 1e-9;
 
+      /**
+       * Extension of a primary face past an edge on a symmetry plane, as a
+       * fraction of its parameter range (3D). The auxiliary plane of a
+       * secondary face beside a symmetry plane is tilted against it, so
+       * where the two surfaces are apart the primary edge projects inside
+       * the secondary one and leaves a sliver of the face uncovered, of
+       * about the gap times the sine of the tilt: half a face's angle on a
+       * pin in a hole, 2e-9 of the face at a clearance of 2e-7 mm (which
+       * dropped the face's nodes from contact). Past the plane the surface
+       * continues as its mirror image, which the face's own map
+       * extrapolates to the order of its interpolation; clipping against
+       * the secondary face keeps what lies beyond. A quarter of a face
+       * covers gaps up to about half the face's size at any tilt up to
+       * 30 degrees. In 2D the segments are cut along the secondary normal
+       * field, which lies in the plane there, and no sliver arises.
+       */
+      constexpr double symmetry_edge_extension = 0.25;
+
       /** Twice the signed area of a plane polygon (positive if its vertices
        * run counterclockwise). */
       double
@@ -665,21 +683,40 @@ namespace Common
             {
               if (primary->unit_normal(m, centre) * n0 >= 0.)
                 continue;
+              // Along each edge of the parameter box: its first corner,
+              // then the points at k / n_primary_segments of the face's
+              // own edge that lie inside the box's edge. Where the box is
+              // extended past an edge, the points along the adjacent
+              // edges stay where the neighbouring face has them, so that
+              // the two polygons still share their common points.
               const auto           &box = parameter_boxes[m];
               std::vector<Point<2>> polygon;
               for (unsigned int e = 0; e < 4; ++e)
-                for (unsigned int k = 0; k < n_primary_segments; ++k)
-                  {
-                    const double t =
-                      static_cast<double>(k) / n_primary_segments;
-                    const Point<2> unit =
-                      unit_corners[e] +
-                      t * (unit_corners[(e + 1) % 4] - unit_corners[e]);
-                    Point<dim - 1> eta;
-                    for (unsigned int d = 0; d < dim - 1; ++d)
-                      eta[d] = box[0][d] + unit[d] * (box[1][d] - box[0][d]);
-                    polygon.push_back(to_plane(primary->point(m, eta)));
-                  }
+                {
+                  const Point<2>    &a      = unit_corners[e];
+                  const Point<2>    &b      = unit_corners[(e + 1) % 4];
+                  const unsigned int along  = e % 2 == 0 ? 0 : 1;
+                  const unsigned int across = 1 - along;
+                  const auto         bound  = [&](const unsigned int d,
+                                         const double       unit) {
+                    return unit == 0. ? box[0][d] : box[1][d];
+                  };
+                  Point<dim - 1> eta;
+                  eta[across] = bound(across, a[across]);
+                  eta[along]  = bound(along, a[along]);
+                  polygon.push_back(to_plane(primary->point(m, eta)));
+                  for (unsigned int k = 0; k <= n_primary_segments; ++k)
+                    {
+                      const double t =
+                        a[along] + (b[along] - a[along]) * k /
+                                     static_cast<double>(n_primary_segments);
+                      if (t == bound(along, a[along]) ||
+                          t == bound(along, b[along]))
+                        continue;
+                      eta[along] = t;
+                      polygon.push_back(to_plane(primary->point(m, eta)));
+                    }
+                }
               if (twice_signed_area(polygon) < 0.)
                 std::reverse(polygon.begin(), polygon.end());
               primary_polygons.emplace_back(m, polygon);
@@ -868,7 +905,7 @@ namespace Common
       for (auto &box : boxes)
         for (unsigned int d = 0; d < dim - 1; ++d)
           box[1][d] = 1.;
-      if (free_edge_extension == 0.)
+      if (free_edge_extension == 0. && dim == 2)
         return boxes;
 
       // The node at each corner of each face's parameter box, the corners
@@ -908,13 +945,51 @@ namespace Common
             ++n_sharing[edge_key(corner_nodes[m], e)];
         }
 
+      // The symmetry planes of the secondary surface: per axis, the
+      // coordinates of its nodes on a plane normal to it.
+      std::array<std::vector<double>, dim> secondary_planes;
+      for (unsigned int j = 0; j < secondary->n_nodes(); ++j)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (secondary->node(j).on_symmetry_plane[d])
+            secondary_planes[d].push_back(
+              secondary->node(j).reference_position[d]);
+
+      // An edge of face m on a symmetry plane of both surfaces: its corner
+      // nodes lie on a plane normal to the same axis, on which secondary
+      // nodes lie too. (A primary body merely held on a plane that the
+      // secondary surface crosses is not mirrored there.)
+      const auto on_symmetry_plane = [&](const unsigned int m,
+                                         const unsigned int e) {
+        if constexpr (dim == 2)
+          return false;
+        const SurfaceNode<dim> &a = primary->node(corner_nodes[m][e]);
+        const SurfaceNode<dim> &b =
+          primary->node(corner_nodes[m][(e + 1) % n_corners]);
+        const double tolerance = 1e-8 * primary->face_size(m);
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a.on_symmetry_plane[d] && b.on_symmetry_plane[d] &&
+              std::any_of(secondary_planes[d].begin(),
+                          secondary_planes[d].end(),
+                          [&](const double x) {
+                            return std::abs(x - a.reference_position[d]) <=
+                                   tolerance;
+                          }))
+            return true;
+        return false;
+      };
+
       // Which bound an edge moves: 2D: the ends eta = 0, 1; 3D: the edges
       // eta_1 = 0, eta_0 = 1, eta_1 = 1, eta_0 = 0.
-      const double f = free_edge_extension;
       for (unsigned int m = 0; m < n_faces; ++m)
         for (unsigned int e = 0; e < n_corners; ++e)
           if (n_sharing[edge_key(corner_nodes[m], e)] == 1)
             {
+              const double f =
+                on_symmetry_plane(m, e) ?
+                  std::max(free_edge_extension, symmetry_edge_extension) :
+                  free_edge_extension;
+              if (f == 0.)
+                continue;
               if constexpr (dim == 2)
                 (e == 0 ? boxes[m][0][0] : boxes[m][1][0]) =
                   e == 0 ? -f : 1. + f;

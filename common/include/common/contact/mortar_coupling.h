@@ -377,8 +377,10 @@ namespace Common
       bool tool_normals = false;
 
       /** The parameter box of each primary face, extended past its free
-       * edges by free_edge_extension: lower and upper bound per
-       * direction. */
+       * edges by free_edge_extension, and in 3D past its edges on a
+       * symmetry plane of both surfaces by at least a quarter of the face
+       * (see symmetry_edge_extension in the source): lower and upper bound
+       * per direction. */
       std::vector<std::array<dealii::Point<dim - 1>, 2>>
       primary_parameter_boxes() const;
     };
