@@ -279,7 +279,7 @@ def robustness_section(results):
            "ratio, rigid bodies, load steps, a first step of 1e-6 of the load, Q1/Q2, penalty, "
            "non-matching and perturbed meshes, initial gaps and overlaps). A run converges (Newton "
            "iterations, most in a step, cutbacks, and the change of the application's headline "
-           "result against the coarse case) or fails with one line naming the cause and no "
+           "result against the coarse case or the variation named) or fails with one line naming the cause and no "
            "result files; a crash, a NaN, a hang or a force balance above 1e-6 is a defect.</p>"]
     sweep = os.path.join(results, "robustness_sweep", "robustness_sweep.json")
     if not os.path.exists(sweep):
@@ -294,7 +294,8 @@ def robustness_section(results):
             ("app", "application"), ("variation", "variation"), ("status", "status"),
             ("newton_iterations", "Newton"), ("max_iterations_per_step", "most per step"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
-            ("change_vs_coarse_percent", "headline change [%]"), ("detail", "detail")])
+            ("change_vs_coarse_percent", "headline change [%]"),
+            ("change_against", "against"), ("detail", "detail")])
     fuzz_file = os.path.join(results, "fuzz_summary.json")
     if not os.path.exists(fuzz_file):
         out.append("<p class='note'>fuzzing not run (python3 scripts/fuzz_prm.py --summary "

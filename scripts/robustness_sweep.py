@@ -39,8 +39,10 @@ Usage:
       [--only NAME ...] [--list]
 
 Each converged run also gives its headline result (HEADLINE) and its change
-against the coarse case in percent: the variations of the mesh, the gaps,
-the load steps and the enforcement should leave it nearly unchanged.
+in percent against the coarse case, or against the variation a row names
+(a third element of its entry in VARIATIONS): the variations of the mesh,
+the gaps, the load steps and the enforcement should leave it nearly
+unchanged.
 
 Writes robustness_sweep.csv and robustness_sweep.json into the work
 directory (default results/robustness_sweep) and prints the table; exits
@@ -184,9 +186,17 @@ VARIATIONS = {
         "not_available": [],
     },
     "loaded_pin": {
-        # A gap is a clearance, an overlap an interference fit.
+        # A gap is a clearance, an overlap an interference fit. The coarse
+        # case's Q1 faces are chords of 22.5 degrees, 0.96 mm inside the
+        # circle at their middle; a body refined toward the contact follows
+        # the circle, so that non-matching Q1 meshes overlap or open by
+        # that much, 2.4 times the pin's travel. Q2 faces follow the circle to
+        # 2e-3 mm: non-matching Q2 meshes, against Q2 on matching ones.
         "runs": standard("Pin material", "Sheet material",
-                         gap=gap_variations("Geometry", "Clearance")),
+                         gap=gap_variations("Geometry", "Clearance"))
+        + [(f"Q2, contact size ratio {r}",
+            degree(2) + [("Mesh", "Contact size ratio", r)], "Q2")
+           for r in ("1/2", "2")],
         "not_available": [("rigid pin", "loaded_pin models both bodies as elastic")],
     },
     "sheet_forming": {
@@ -313,27 +323,37 @@ def main():
     for app in args.apps:
         # The coarse case runs first whenever a selected variation needs its
         # contact cell size.
-        table = [(name, entries) for name, entries in VARIATIONS[app]["runs"]
-                 if not args.only or any(o in name for o in args.only)]
-        needs_cell = any(isinstance(v, tuple) for _, entries in table for _, _, v in entries)
-        if needs_cell and all(name != "coarse case" for name, _ in table):
-            table.insert(0, ("coarse case", []))
+        # (name, entries, the variation its headline is compared with)
+        table = [(run[0], run[1], run[2] if len(run) > 2 else "coarse case")
+                 for run in VARIATIONS[app]["runs"]
+                 if not args.only or any(o in run[0] for o in args.only)]
+        # A variation runs after the one it is compared with.
+        for name, _, against in list(table):
+            if (against != "coarse case"
+                    and all(other != against for other, _, _ in table)):
+                reference = next(run for run in VARIATIONS[app]["runs"]
+                                 if run[0] == against)
+                table.insert(0, (reference[0], reference[1], "coarse case"))
+        needs_cell = any(isinstance(v, tuple) for _, entries, _ in table
+                         for _, _, v in entries)
+        if needs_cell and all(name != "coarse case" for name, _, _ in table):
+            table.insert(0, ("coarse case", [], "coarse case"))
         if args.list:
-            for name, entries in table:
+            for name, entries, against in table:
                 print(f"{app}: {name}: " + "; ".join(
                 f"{p}/{k} = " + (f"{v[0]:g} {v[1]}" if isinstance(v, tuple) else v)
                 for p, k, v in entries))
             for name, why in VARIATIONS[app]["not_available"]:
                 print(f"{app}: {name}: not available ({why})")
             continue
-        executable = os.path.join(args.build, app, app)
+        executable = os.path.abspath(os.path.join(args.build, app, app))
         if not os.access(executable, os.X_OK):
             sys.exit(f"robustness_sweep: no executable {executable}; build the target {app}")
         # The smallest cell at the contact, from the coarse case's summary:
         # the unit of the initial gaps.
         cell_size = None
-        coarse_headline = None
-        for number, (name, entries) in enumerate(table, 1):
+        headlines = {}
+        for number, (name, entries, against) in enumerate(table, 1):
             case_dir = os.path.join(args.work_dir, app, f"{number:02d}")
             shutil.rmtree(case_dir, ignore_errors=True)
             os.makedirs(case_dir)
@@ -356,18 +376,18 @@ def main():
                 headline = summary.get(section, {}).get(key)
             if name == "coarse case" and status == "converged":
                 cell_size = summary.get("mesh", {}).get("smallest_cell_in_contact_zone_mm")
-                coarse_headline = headline
+            headlines[name] = headline
             change = ""
-            if (headline is not None and name != "coarse case"
-                    and coarse_headline not in (None, 0)):
-                change = f"{100. * (headline / coarse_headline - 1.):+.3g}"
+            if (headline is not None and name != against
+                    and headlines.get(against) not in (None, 0)):
+                change = f"{100. * (headline / headlines[against] - 1.):+.3g}"
             n_defects += status.startswith("DEFECT")
             row = {"app": app, "variation": name, "status": status,
                    "newton_iterations": newton.get("total_iterations", ""),
                    "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
                    "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
                    "headline": "" if headline is None else headline,
-                   "change_vs_coarse_percent": change,
+                   "change_vs_coarse_percent": change, "change_against": against,
                    "detail": detail, "case": os.path.relpath(case_dir, ROOT)}
             rows.append(row)
             print(f"{app:14s} {name:30s} {status:22s} it {str(row['newton_iterations']):>5s} "
@@ -378,7 +398,8 @@ def main():
             rows.append({"app": app, "variation": name, "status": "not available",
                          "newton_iterations": "", "max_iterations_per_step": "",
                          "cutbacks": "", "wall_time_s": "", "headline": "",
-                         "change_vs_coarse_percent": "", "detail": why, "case": ""})
+                         "change_vs_coarse_percent": "", "change_against": "",
+                         "detail": why, "case": ""})
     if args.list:
         return 0
     os.makedirs(args.work_dir, exist_ok=True)
