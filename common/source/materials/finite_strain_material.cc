@@ -1,3 +1,4 @@
+#include <common/io/parameter_values.h>
 #include <common/materials/finite_strain_material.h>
 #include <common/materials/linear_elastic.h>
 
@@ -349,12 +350,12 @@ namespace Common
           name == "neo-Hookean split" ? FiniteStrainModel::neo_hookean_split :
           name == "J2 plasticity"     ? FiniteStrainModel::j2_plasticity :
                                         FiniteStrainModel::saint_venant_kirchhoff;
-        youngs_modulus = prm.get_double("Young's modulus");
+        youngs_modulus = IO::get_positive(prm,
+                                          subsection,
+                                          "Young's modulus",
+                                          IO::max_modulus,
+                                          "MPa");
         poisson_ratio  = prm.get_double("Poisson's ratio");
-        AssertThrow(youngs_modulus > 0.,
-                    ExcMessage(subsection +
-                               ": Young's modulus must be positive, got " +
-                               number(youngs_modulus) + " MPa."));
         const bool may_be_incompressible =
           model == FiniteStrainModel::neo_hookean_split;
         AssertThrow(poisson_ratio > -1. &&

@@ -1,3 +1,4 @@
+#include <common/io/parameter_values.h>
 #include <common/materials/linear_elastic.h>
 
 #include <deal.II/physics/elasticity/standard_tensors.h>
@@ -20,7 +21,7 @@ namespace Common
                           "210000",
                           Patterns::Double(),
                           "Young's modulus E. Units: MPa (N/mm^2). Must be "
-                          "positive.");
+                          "positive and at most 1e12.");
         prm.declare_entry("Poisson's ratio",
                           "0.3",
                           Patterns::Double(),
@@ -38,15 +39,14 @@ namespace Common
     {
       prm.enter_subsection(subsection);
       {
-        youngs_modulus = prm.get_double("Young's modulus");
+        youngs_modulus = IO::get_positive(prm,
+                                          subsection,
+                                          "Young's modulus",
+                                          IO::max_modulus,
+                                          "MPa");
         poisson_ratio  = prm.get_double("Poisson's ratio");
       }
       prm.leave_subsection();
-      AssertThrow(youngs_modulus > 0.,
-                  ExcMessage(subsection +
-                             ": Young's modulus must be "
-                             "positive, got " +
-                             std::to_string(youngs_modulus) + " MPa."));
       AssertThrow(poisson_ratio > -1. && poisson_ratio < 0.5,
                   ExcMessage(subsection +
                              ": Poisson's ratio must lie in "
