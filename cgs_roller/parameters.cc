@@ -3,6 +3,7 @@
 #include <common/io/parameter_values.h>
 
 #include <cmath>
+#include <sstream>
 
 
 namespace CgsRoller
@@ -166,5 +167,18 @@ namespace CgsRoller
     block_material.parse_parameters(prm,
                                     "Block material",
                                     solid.finite_strain());
+    // Every step's results are compared with Hertz's solution, which
+    // presses the roller onto the block.
+    const std::string channel = Common::Solvers::load_factor_channel().name;
+    for (unsigned int s = 0; s < load_program.stages.size(); ++s)
+      {
+        const double value = load_program.stages[s].end_values.at(channel);
+        std::ostringstream text;
+        text << "Load program/Stage " << s + 1 << ": '" << channel
+             << "' must not be negative (the roller is pressed onto the "
+                "block), got "
+             << value << ".";
+        AssertThrow(value >= 0., ExcMessage(text.str()));
+      }
   }
 } // namespace CgsRoller

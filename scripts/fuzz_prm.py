@@ -108,7 +108,8 @@ named by its stage, 'Load program/Stage 2'; a boundary id entry by its
 value, 'Boundary id 7 does not exist'), the unknown key or subsection,
 'subsection' or 'end' for an unbalanced file (deal.II's messages), 'line
 <' for garbage, the key of any entry a truncated file lost, and 'empty',
-'no entr' or 'missing' for an empty file.
+'no entr' or 'missing' for an empty file (or one cut before its first
+entry).
 
 --ci selects a subset of the --count mutations for the test suite (at
 least 30: the huge meshes of a single entry and the first one within the
@@ -627,6 +628,9 @@ def generate(app, base, entries, count, seed):
         for l in lines[len(kept) - 1:]:
             if l.kind == "set":
                 names += entry_names(l.key, defaults.get((l.path, l.key)))
+        # Cut before its first entry, the file is as good as empty.
+        if all(l.kind != "set" for l in lines[:len(kept) - 1]):
+            names += EMPTY_NAMES
         pools["file"].append(Mutation(
             "file", f"truncated after byte {cut} of {len(data)} ('{kept[-1].strip()[-30:]}')",
             data[:cut], names, "either"))

@@ -168,7 +168,10 @@ namespace Common
                     std::to_string(contact.secondary_boundary_id) + ", " +
                     std::to_string(problem.coupling().n_rows()) +
                     " nodes) faces the primary surface within 'Search "
-                    "distance': the bodies cannot come into contact."));
+                    "distance': the bodies cannot come into contact (a face "
+                    "pairs only if all of it does: faces larger than the "
+                    "distance may need more 'Number of contact "
+                    "refinements')."));
       if (parameters.run_control.dry_run)
         {
           console.stream() << "Dry run: parameters, mesh and contact pairing "
