@@ -992,7 +992,8 @@ def main():
                         "directory, removed at the end if no defect is found)")
     parser.add_argument("--summary", help="write the counts per application (mutations, "
                         "rejected, ran, running, defects, wall time) to this JSON file, "
-                        "as the report's robustness section reads them")
+                        "as the report's robustness section reads them; the applications not run "
+                        "keep their entries")
     args = parser.parse_args()
     if (args.executable or args.production) and len(args.app) != 1:
         parser.error("--executable and --production need a single --app")
@@ -1016,7 +1017,11 @@ def main():
     print()
     n_defects = sum(summarise(app, outcomes) for app, outcomes in results.items())
     if args.summary:
+        # The applications not run keep their earlier counts.
         table = {}
+        if os.path.exists(args.summary):
+            with open(args.summary) as f:
+                table = json.load(f)
         for app, outcomes in results.items():
             statuses = [o[2] for o in outcomes if o[0] > 0]
             table[app] = {

@@ -11,7 +11,8 @@
  * stops on a non-finite residual and on a cycling active set, unless the
  * problem offers the one-change-per-equilibrium mode: then the cycling set
  * is held until equilibrium, and each later update changes one point from
- * an equilibrium until none changes. With
+ * an equilibrium until none changes, or until an equilibrium returns to
+ * the one before the last (two sets trading places). With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -88,11 +89,15 @@ namespace
   /** A problem whose active set cycles at the first iteration and that
    * offers the one-change-per-equilibrium mode: each call is logged. The
    * equilibrium residual follows @p equilibrium (the last entry repeats);
-   * the one-point updates change @p one_point_changes[k] points in turn. */
+   * the one-point updates change @p one_point_changes[k] points in turn.
+   * The complementarity residual is 1e-3 until the changes run out, then
+   * 0; or, if @p complementarity is given, its entry for the number of
+   * one-point updates made so far (the last entry repeats). */
   NewtonStatistics
   run_held(const std::vector<double>       &equilibrium,
            const std::vector<unsigned int> &one_point_changes,
-           std::vector<std::string>        &calls)
+           std::vector<std::string>        &calls,
+           const std::vector<double>       &complementarity = {})
   {
     NonlinearSolverParameters parameters;
     parameters.max_iterations = 12;
@@ -110,7 +115,12 @@ namespace
       NewtonResidual r;
       r.equilibrium =
         equilibrium[std::min<std::size_t>(it - 1, equilibrium.size() - 1)];
-      r.complementarity = one_point < one_point_changes.size() ? 1e-3 : 0.;
+      r.complementarity =
+        !complementarity.empty() ?
+          complementarity[std::min<std::size_t>(one_point,
+                                                complementarity.size() - 1)] :
+        one_point < one_point_changes.size() ? 1e-3 :
+                                               0.;
       return r;
     };
     callbacks.update_active_set = [&]() {
@@ -207,6 +217,21 @@ main()
     std::vector<std::string> calls;
     report("cycling, equilibrium not reached",
            run_held({1e-3, 1e-6}, {1}, calls));
+    for (const auto &call : calls)
+      deallog << "  " << call << std::endl;
+  }
+
+  // Two sets that trade places at every equilibrium (a node tensile when
+  // closed and penetrating when open): the third equilibrium returns to
+  // the first one's complementarity residual, and the loop stops there
+  // (iteration 6) with a failure that says so.
+  {
+    std::vector<std::string> calls;
+    report("alternating equilibria",
+           run_held({1e-3, 1e-12, 1e-5, 1e-12, 1e-5, 1e-12, 1e-5, 1e-12},
+                    {1, 1, 1, 1, 1, 1},
+                    calls,
+                    {3.848e-4, 3.925e-4, 3.848e-4}));
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }

@@ -112,6 +112,11 @@ namespace Common
       bool                   one_change_per_equilibrium = false;
       bool                   hold_set                   = false;
       unsigned int           n_held                     = 0;
+      // The complementarity residuals of the held sets' equilibria: an
+      // equilibrium that returns to the one before the last (A, B, A)
+      // alternates between two sets for good, since the single change
+      // from each is determined by the state.
+      std::vector<double> equilibria;
       for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
         {
           // Inexact Newton: the first iteration, which carries the load
@@ -145,6 +150,29 @@ namespace Common
             residual.increment < parameters.step_tolerance &&
             residual.equilibrium <= parameters.step_test_residual_bound;
           n_held = hold_set ? n_held + 1 : 0;
+          if (hold_set &&
+              (residual.equilibrium < parameters.tolerance ||
+               hold_at_round_off) &&
+              residual.complementarity >= parameters.tolerance)
+            {
+              equilibria.push_back(residual.complementarity);
+              const std::size_t n = equilibria.size();
+              if (n >= 3 && std::abs(equilibria[n - 1] - equilibria[n - 3]) <=
+                              1e-6 * equilibria[n - 1])
+                {
+                  statistics.n_iterations = it;
+                  statistics.residuals.push_back(residual);
+                  statistics.active_set_changes.push_back(0);
+                  statistics.failure =
+                    "the active set alternates between two equilibria "
+                    "(complementarity residuals " +
+                    IO::Console::format(equilibria[n - 2]) + " and " +
+                    IO::Console::format(equilibria[n - 1]) +
+                    "): no contact state has both the pressures and the "
+                    "gaps of the right sign";
+                  return statistics;
+                }
+            }
           if (hold_set && (residual.equilibrium < parameters.tolerance ||
                            hold_diverges || hold_at_round_off))
             {
