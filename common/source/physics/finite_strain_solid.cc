@@ -775,6 +775,17 @@ namespace Common
     FiniteStrainSolid<dim>::augment(const DoFHandler<dim> &dof_handler,
                                     const VectorType      &u)
     {
+      return dilatation_error(dof_handler, u, true);
+    }
+
+
+
+    template <int dim>
+    double
+    FiniteStrainSolid<dim>::dilatation_error(const DoFHandler<dim> &dof_handler,
+                                             const VectorType      &u,
+                                             const bool             update)
+    {
       double largest = 0.;
       if (has_incompressibility_multipliers())
         {
@@ -794,6 +805,8 @@ namespace Common
                             output.dilatation_error = &error;
                             integrate_cell(cell, u_cell, scratch, output);
                             largest = std::max(largest, error);
+                            if (!update)
+                              return;
                             const double kappa =
                               parameters.penalty_factor * law.shear_modulus();
                             const unsigned int index =
@@ -815,7 +828,14 @@ namespace Common
       const DoFHandler<dim> &dof_handler,
       const VectorType      &u)
     {
-      return augment(dof_handler, u) > parameters.incompressibility_tolerance;
+      // The multipliers change only if another solve follows: a state
+      // accepted within the tolerance keeps the multipliers it is in
+      // equilibrium with.
+      if (dilatation_error(dof_handler, u, false) <=
+          parameters.incompressibility_tolerance)
+        return false;
+      augment(dof_handler, u);
+      return true;
     }
 
 

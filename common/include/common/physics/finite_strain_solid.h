@@ -191,11 +191,23 @@ namespace Common
       double
       augment(const dealii::DoFHandler<dim> &dof_handler, const VectorType &u);
 
-      /** @brief augment(), true if the largest \f$|\tilde J - 1|\f$
-       * before the update exceeded the incompressibility tolerance. */
+      /** @brief augment() if the largest \f$|\tilde J - 1|\f$ exceeds
+       * the incompressibility tolerance, and then true; otherwise the
+       * multipliers stay as they are (the state is in equilibrium with
+       * them) and false. */
       bool
       update_multipliers(const dealii::DoFHandler<dim> &dof_handler,
                          const VectorType              &u) override;
+
+      /**
+       * @brief The largest \f$|\tilde J - 1|\f$ of the exactly
+       * incompressible cells at @p u over all ranks (0 if there are
+       * none); with @p update, also the update of augment().
+       */
+      double
+      dilatation_error(const dealii::DoFHandler<dim> &dof_handler,
+                       const VectorType              &u,
+                       const bool                     update);
 
       /** @brief "Maximum augmentations" if some cell is exactly
        * incompressible, else 0. */
