@@ -835,6 +835,26 @@ namespace Common
 
 
     template <int dim>
+    void
+    ContactNewtonProblem<dim>::release_dofs(
+      const std::vector<types::global_dof_index> &dofs)
+    {
+      held_dofs.erase(std::remove_if(held_dofs.begin(),
+                                     held_dofs.end(),
+                                     [&](const types::global_dof_index dof) {
+                                       return std::find(dofs.begin(),
+                                                        dofs.end(),
+                                                        dof) != dofs.end();
+                                     }),
+                      held_dofs.end());
+      linear_solver.reset();
+      setup_stored_dofs(*base_constraints);
+      setup_matrices();
+    }
+
+
+
+    template <int dim>
     double
     ContactNewtonProblem<dim>::time_fixed_active_set_solve(
       const Solvers::LoadState &state,

@@ -175,6 +175,16 @@ namespace Common
       hold_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
 
       /**
+       * @brief Stop supporting the DoFs @p dofs that hold_dofs() holds,
+       * from the next solve on: a stage of a load program that frees a
+       * support (the displacement keeps its current value as the start of
+       * the next step, and the support's reaction is released within that
+       * step). DoFs not held are ignored. Every rank passes the same list.
+       */
+      void
+      release_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
+
+      /**
        * @brief Processor time of one assembly (cell matrices included) and
        * one solve with the current active set held fixed, the least any
        * contact solver must pay: the median of @p n_repeats measurements.

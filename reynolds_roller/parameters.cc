@@ -1,0 +1,199 @@
+#include "parameters.h"
+
+#include <common/io/parameter_values.h>
+
+namespace ReynoldsRoller
+{
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Roller radius",
+                        "30",
+                        Patterns::Double(),
+                        "Radius R of the rigid roller; its centre is at "
+                        "(0, H/2 + R), its lowest point touches the strip's "
+                        "top at the start. Units: mm.");
+      prm.declare_entry("Strip length behind the roller",
+                        "60",
+                        Patterns::Double(),
+                        "Length L1 of the strip behind the roller's axis, "
+                        "x from -L1 to 0; point A is the strip's top-left "
+                        "corner (-L1, H/2). Units: mm, larger than R.");
+      prm.declare_entry("Strip length ahead of the roller",
+                        "240",
+                        Patterns::Double(),
+                        "Length L2 of the strip ahead of the roller's axis, "
+                        "x from 0 to L2: the strip moves by about -175 mm "
+                        "in a full turn, and the roller must stay on it. "
+                        "Units: mm, larger than R.");
+      prm.declare_entry("Strip thickness",
+                        "20",
+                        Patterns::Double(),
+                        "Thickness H of the rubber strip, y from -H/2 to "
+                        "H/2. Units: mm.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string s = "Geometry";
+    prm.enter_subsection(s);
+    {
+      roller_radius = Common::IO::get_positive_length(prm, s, "Roller radius");
+      length_behind =
+        Common::IO::get_positive_length(prm,
+                                        s,
+                                        "Strip length behind the roller");
+      length_ahead =
+        Common::IO::get_positive_length(prm,
+                                        s,
+                                        "Strip length ahead of the roller");
+      thickness = Common::IO::get_positive_length(prm, s, "Strip thickness");
+    }
+    prm.leave_subsection();
+    AssertThrow(length_behind > roller_radius && length_ahead > roller_radius,
+                ExcMessage("Geometry: 'Strip length behind the roller' and "
+                           "'Strip length ahead of the roller' must exceed "
+                           "'Roller radius', so that the contact zone lies "
+                           "on the strip."));
+  }
+
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry("Element degree",
+                        "2",
+                        Patterns::Integer(1, 2),
+                        "Degree of the Lagrange element of the "
+                        "displacement: 1 or 2 (with 'Element technology = "
+                        "mixed': Q1-P0 or Q2-P1).");
+      prm.declare_entry("Number of cells along the length",
+                        "75",
+                        Patterns::Integer(4, 4000),
+                        "Cells along the strip, L1 + L2 (uniform).");
+      prm.declare_entry("Number of cells through the thickness",
+                        "5",
+                        Patterns::Integer(1, 200),
+                        "Cells through the strip's thickness (uniform).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      element_degree = prm.get_integer("Element degree");
+      n_cells_length = prm.get_integer("Number of cells along the length");
+      n_cells_thickness =
+        prm.get_integer("Number of cells through the thickness");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SupportParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Supports");
+    {
+      prm.declare_entry("Bottom free in x from stage",
+                        "2",
+                        Patterns::Integer(0, 6),
+                        "The strip's bottom is pushed up by the channel "
+                        "'Indentation' throughout; it is held at u_x = 0 "
+                        "before this stage of the load program (from 1) "
+                        "and free in x from its start (the benchmark: held "
+                        "while pressing, free while rolling). 1: free "
+                        "throughout, the strip held in x by friction "
+                        "alone; 0: held throughout (without friction "
+                        "nothing else holds it).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SupportParameters::parse_parameters(ParameterHandler  &prm,
+                                      const unsigned int n_stages)
+  {
+    prm.enter_subsection("Supports");
+    bottom_free_stage = prm.get_integer("Bottom free in x from stage");
+    prm.leave_subsection();
+    AssertThrow(bottom_free_stage <= n_stages,
+                ExcMessage("Supports: 'Bottom free in x from stage' must be "
+                           "a stage of the load program's " +
+                           std::to_string(n_stages) + "."));
+  }
+
+
+
+  std::vector<Common::Solvers::LoadChannel>
+  load_channels()
+  {
+    return {{"Indentation",
+             "Upward displacement of the strip's bottom at the end of the "
+             "stage, which presses the strip onto the roller (the "
+             "benchmark: 3, then held). Units: mm, not negative."},
+            {"Roller angle",
+             "Clockwise rotation of the roller about its fixed axis at the "
+             "end of the stage, seen from +z with x to the right and y up "
+             "(the benchmark: 0 while pressing, then 360). Units: "
+             "degrees."}};
+  }
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+    SupportParameters::declare_parameters(prm);
+    Common::Materials::SolidMaterialParameters::declare_parameters(
+      prm,
+      "Rubber material");
+    Common::Problems::ContactRunParameters::declare_parameters(
+      prm,
+      load_channels(),
+      {{"Indentation", 3.}, {"Roller angle", 0.}});
+  }
+
+
+
+  Parameters::Parameters(const std::string &filename)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input(filename);
+
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    Common::Problems::ContactRunParameters::parse_parameters(prm,
+                                                             load_channels());
+    supports.parse_parameters(prm, load_program.stages.size());
+    for (unsigned int s = 0; s < load_program.stages.size(); ++s)
+      AssertThrow(load_program.stages[s].end_values.at("Indentation") >= 0.,
+                  ExcMessage("Load program/Stage " + std::to_string(s + 1) +
+                             ": 'Indentation' must not be negative (the "
+                             "bottom pushes the strip onto the roller)."));
+    rubber_material.parse_parameters(prm,
+                                     "Rubber material",
+                                     solid.finite_strain());
+  }
+} // namespace ReynoldsRoller

@@ -1,0 +1,280 @@
+/*
+ * Benchmark 5 of the FENET/NAFEMS advanced contact benchmarks: mesh,
+ * roller, supports, load program and the per-step record; see README.md.
+ */
+#include "rolling_problem.h"
+
+#include <common/geometry/two_body_meshes.h>
+#include <common/physics/boundary_conditions.h>
+#include <common/physics/boundary_displacement.h>
+#include <common/physics/solid_model.h>
+#include <common/problems/contact_run.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ReynoldsRoller
+{
+  RollingProblem::RollingProblem(const Parameters &parameters)
+    : Base(parameters, parameters.mesh.element_degree, "reynolds_roller")
+    , parameters(parameters)
+  {}
+
+
+
+  std::string
+  RollingProblem::title() const
+  {
+    return "reynolds_roller: rigid steel roller pressed into a rubber strip "
+           "and turned (plane strain)";
+  }
+
+
+
+  std::vector<std::string>
+  RollingProblem::result_files() const
+  {
+    return {"history.csv",
+            "creep.png",
+            "creep.gp",
+            "roller_loads.png",
+            "roller_loads.gp"};
+  }
+
+
+
+  std::array<Point<RollingProblem::dim>, n_corners>
+  RollingProblem::corners() const
+  {
+    const auto  &g = parameters.geometry;
+    const double h = 0.5 * g.thickness;
+    return {{Point<dim>(-g.length_behind, h),
+             Point<dim>(-g.length_behind, -h),
+             Point<dim>(g.length_ahead, h),
+             Point<dim>(g.length_ahead, -h)}};
+  }
+
+
+
+  // The strip [-L1, L2] x [-H/2, H/2] and, apart from it, one carrier cell
+  // whose first vertex is the roller's reference node.
+  void
+  RollingProblem::make_grid()
+  {
+    const auto        &g = parameters.geometry;
+    const double       h = 0.5 * g.thickness;
+    Triangulation<dim> strip, carrier;
+    GridGenerator::subdivided_hyper_rectangle(
+      strip,
+      {parameters.mesh.n_cells_length, parameters.mesh.n_cells_thickness},
+      Point<dim>(-g.length_behind, -h),
+      Point<dim>(g.length_ahead, h));
+    const double tolerance = 1e-8 * g.thickness;
+    for (const auto &cell : strip.active_cell_iterators())
+      {
+        cell->set_material_id(MaterialIds::strip);
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const auto c = face->center();
+              face->set_boundary_id(
+                std::abs(c[1] + h) < tolerance ? BoundaryIds::bottom :
+                std::abs(c[1] - h) < tolerance ? BoundaryIds::top :
+                                                 BoundaryIds::ends);
+            }
+      }
+    // Behind the strip's left end, clear of the roller.
+    GridGenerator::hyper_rectangle(
+      carrier,
+      Point<dim>(-g.length_behind - 2. * g.thickness, -h),
+      Point<dim>(-g.length_behind - g.thickness, 0.));
+    for (const auto &cell : carrier.active_cell_iterators())
+      cell->set_material_id(MaterialIds::roller_carrier);
+    Common::Geometry::join_bodies<dim>({&strip, &carrier}, triangulation);
+  }
+
+
+
+  Common::Contact::RigidTool<RollingProblem::dim>
+  RollingProblem::make_roller() const
+  {
+    const auto    &g = parameters.geometry;
+    const double   R = g.roller_radius;
+    const Point<2> centre(0., 0.5 * g.thickness + R);
+    // A full circle, counterclockwise (the roller on its left); its seam
+    // starts behind the contact zone and meets the strip only after most
+    // of a turn, where the circle is as smooth as anywhere.
+    const double                  start = -0.5 * numbers::PI - 1.;
+    Common::Contact::RigidProfile circle;
+    circle.add_arc(centre, R, start, start + 2. * numbers::PI);
+
+    Common::Contact::RigidTool<dim> roller;
+    roller.name = "roller";
+    roller.surface =
+      std::make_shared<const Common::Contact::RigidSurface<dim>>(circle);
+    roller.reference_node_dofs = roller_carrier.reference_node_dofs;
+    roller.centre              = centre;
+    // The channel is clockwise in degrees; the tool's angle is
+    // counterclockwise in radians.
+    roller.rotation = [](const Common::Solvers::LoadState &state) {
+      return -state.value("Roller angle") * numbers::PI / 180.;
+    };
+    return roller;
+  }
+
+
+
+  void
+  RollingProblem::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    // The bottom's y DoFs carry the indentation; the roller's carrier is
+    // fixed (the axis does not move).
+    Common::Physics::make_homogeneous_constraints<dim>(
+      mapping,
+      dof_handler,
+      {},
+      {{1, {BoundaryIds::bottom}}},
+      constraints_dirichlet_and_hanging_nodes);
+    roller_carrier = Common::Physics::add_prescribed_translation_constraints(
+      dof_handler,
+      MaterialIds::roller_carrier,
+      constraints_dirichlet_and_hanging_nodes);
+    {
+      const FEValuesExtractors::Scalar x(0), y(1);
+      const IndexSet                   bottom_x =
+        DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe.component_mask(x),
+                                        {BoundaryIds::bottom});
+      const IndexSet bottom_y =
+        DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe.component_mask(y),
+                                        {BoundaryIds::bottom});
+      // Every rank passes the same lists to hold_dofs().
+      bottom_x_dofs.clear();
+      bottom_y_dofs.clear();
+      for (const auto dof : bottom_x)
+        bottom_x_dofs.push_back(dof);
+      for (const auto dof : bottom_y)
+        bottom_y_dofs.push_back(dof);
+    }
+
+    setup_contact_problem(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
+        mapping,
+        fe,
+        {{MaterialIds::strip, parameters.rubber_material},
+         {MaterialIds::roller_carrier, parameters.rubber_material}}),
+      std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+        dof_handler,
+        mapping,
+        BoundaryIds::top,
+        std::vector<Common::Contact::RigidTool<dim>>{make_roller()},
+        parameters.contact.search_distance,
+        false),
+      parameters.rubber_material.youngs_modulus);
+
+    // Held in x while pressing.
+    if (parameters.supports.bottom_free_stage != 1)
+      {
+        contact_problem->hold_dofs(bottom_x_dofs);
+        bottom_held = true;
+      }
+  }
+
+
+
+  // No applied forces: the bottom moves and the roller turns. The scale of
+  // the residuals is the force per unit depth that strains the strip's
+  // section under the roller by 1e-3.
+  Common::Problems::ExternalLoad
+  RollingProblem::external_load() const
+  {
+    Common::Problems::ExternalLoad load;
+    load.add = [](const Common::Solvers::LoadState &,
+                  const AffineConstraints<double> &,
+                  TrilinosWrappers::MPI::Vector &) {
+    };
+    const double scale = 1e-3 * parameters.rubber_material.youngs_modulus *
+                         parameters.geometry.roller_radius;
+    load.magnitude = [scale](const Common::Solvers::LoadState &) {
+      return scale;
+    };
+    load.prescribed_displacements =
+      [this](const Common::Solvers::LoadState          &state,
+             std::map<types::global_dof_index, double> &values) {
+        const double indentation = state.value("Indentation");
+        for (const auto dof : bottom_y_dofs)
+          values[dof] = indentation;
+        roller_carrier.prescribe(Tensor<1, dim>(), values);
+      };
+    return load;
+  }
+
+
+
+  void
+  RollingProblem::postprocess_step(
+    const Common::Solvers::StepInfo         &step,
+    const Common::Solvers::NewtonStatistics &statistics)
+  {
+    Common::Problems::print_step(console, step, statistics, *contact_problem);
+
+    const auto &geometry =
+      static_cast<const Common::Contact::CurrentMortarGeometry<dim> &>(
+        *contact_geometry);
+    const auto loads =
+      geometry.tool_loads(contact_problem->enforcement().state(),
+                          dof_handler.locally_owned_dofs(),
+                          mpi_communicator);
+    StepRecord record;
+    record.time          = step.state.time;
+    record.indentation   = step.state.value("Indentation");
+    record.angle         = step.state.value("Roller angle");
+    record.roller_force  = loads[0].force;
+    record.roller_moment = loads[0].moment[2];
+    record.bottom_reaction =
+      contact_problem->reaction_forces({BoundaryIds::bottom},
+                                       step.state,
+                                       external_load())[0];
+    const double magnitude = record.roller_force.norm();
+    record.balance =
+      magnitude > 0. ?
+        (record.roller_force - record.bottom_reaction).norm() / magnitude :
+        0.;
+    const auto points = corners();
+    for (unsigned int c = 0; c < n_corners; ++c)
+      record.corner_ux[c] =
+        Common::Physics::displacement_at(mapping,
+                                         dof_handler,
+                                         contact_problem->displacement(),
+                                         points[c],
+                                         "a corner of the strip")[0];
+    records.push_back(record);
+
+    console.print_quantity("Roller angle (clockwise)", "deg", record.angle);
+    console.print_quantity("Point A, u_x", "mm", record.corner_ux[0]);
+    console.print_quantity("Vertical force on the roller",
+                           "N/mm",
+                           record.roller_force[1]);
+    console.print_quantity("Driving torque", "N", -record.roller_moment);
+
+    // Free the bottom in x for the stages from the one that frees it: the
+    // next step belongs to it once this one ends its predecessor.
+    const unsigned int free_stage = parameters.supports.bottom_free_stage;
+    if (bottom_held && free_stage > 1 &&
+        std::abs(step.state.time - (free_stage - 1.)) < 1e-9)
+      {
+        contact_problem->release_dofs(bottom_x_dofs);
+        bottom_held = false;
+        console.stream() << "  The strip's bottom is free in x from here."
+                         << std::endl;
+      }
+    Common::Problems::warn_if_search_edge_reached(console, *contact_problem);
+  }
+} // namespace ReynoldsRoller

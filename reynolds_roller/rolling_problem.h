@@ -1,0 +1,120 @@
+/*
+ * Benchmark 5 of the FENET/NAFEMS advanced contact benchmarks, "steel
+ * roller on rubber": a rigid roller of radius 30 mm is pressed 3 mm into a
+ * 20 mm rubber strip (exactly incompressible neo-Hookean) and turned a
+ * full revolution about its fixed axis; the strip, free in x on its
+ * bottom, is carried along by Coulomb friction (mu = 0.3) and advances
+ * less than the roller's circumference (Reynolds creep). The model is
+ * ../shared/specs/reynolds_roller.md; see README.md.
+ */
+#ifndef reynolds_roller_rolling_problem_h
+#define reynolds_roller_rolling_problem_h
+
+#include <common/contact/current_mortar_geometry.h>
+#include <common/physics/rigid_body.h>
+#include <common/problems/contact_application.h>
+
+#include "parameters.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ReynoldsRoller
+{
+  using namespace dealii;
+
+  /** Material ids: the strip and the roller's carrier cell. */
+  namespace MaterialIds
+  {
+    constexpr types::material_id strip          = 1;
+    constexpr types::material_id roller_carrier = 2;
+  } // namespace MaterialIds
+
+  /** Boundary ids of the strip. */
+  namespace BoundaryIds
+  {
+    /** y = -H/2: pushed up by the indentation. */
+    constexpr types::boundary_id bottom = 1;
+    /** y = H/2, the secondary contact surface. */
+    constexpr types::boundary_id top = 2;
+    /** x = -L1 and x = L2: free. */
+    constexpr types::boundary_id ends = 3;
+  } // namespace BoundaryIds
+
+  /** The strip's corners: top left (point A), bottom left, top right,
+   * bottom right. */
+  constexpr unsigned int n_corners = 4;
+
+  /** The state at one accepted step. */
+  struct StepRecord
+  {
+    /** Pseudo-time, indentation (mm) and clockwise roller angle (deg). */
+    double time, indentation, angle;
+    /** u_x of each corner (mm), A first. */
+    std::array<double, n_corners> corner_ux;
+    /** Force of the strip on the roller (N per mm of depth) and its
+     * moment about the roller's axis (N mm per mm; counterclockwise
+     * positive): minus the driving torque. */
+    Tensor<1, 2> roller_force;
+    double       roller_moment;
+    /** Reaction of the bottom support on the strip (N per mm). */
+    Tensor<1, 2> bottom_reaction;
+    /** |roller force - bottom reaction| over |roller force|: the strip's
+     * balance (the roller's force is the strip's contact force reversed). */
+    double balance;
+  };
+
+  /**
+   * @brief The rolling problem: the strip's top (secondary surface)
+   * against the rigid roller (an analytic circle, the primary side),
+   * contact in the current configuration.
+   */
+  class RollingProblem : public Common::Problems::ContactApplication<2>
+  {
+  public:
+    explicit RollingProblem(const Parameters &parameters);
+
+  private:
+    static constexpr int dim = 2;
+    using Base               = Common::Problems::ContactApplication<dim>;
+
+    std::string
+    title() const override;
+    void
+    make_grid() override;
+    void
+    setup_system() override;
+    Common::Problems::ExternalLoad
+    external_load() const override;
+    std::vector<std::string>
+    result_files() const override;
+    void
+    postprocess_step(
+      const Common::Solvers::StepInfo         &step,
+      const Common::Solvers::NewtonStatistics &statistics) override;
+    void
+    output_results(
+      const Common::Solvers::LoadSteppingStatistics &stepping) override;
+
+    /** The roller in its initial position: a full circle about (0, H/2 +
+     * R), turned clockwise by the channel 'Roller angle'. */
+    Common::Contact::RigidTool<dim>
+    make_roller() const;
+
+    /** The strip's corners in the reference configuration, A first. */
+    std::array<Point<dim>, n_corners>
+    corners() const;
+
+    const Parameters                           &parameters;
+    Common::Physics::PrescribedTranslation<dim> roller_carrier;
+    /** The y DoFs of the bottom (prescribed: the indentation) and its x
+     * DoFs (held before the stage that frees them). */
+    std::vector<types::global_dof_index> bottom_y_dofs, bottom_x_dofs;
+    bool                                 bottom_held = false;
+    /** The state at every accepted step. */
+    std::vector<StepRecord> records;
+  };
+} // namespace ReynoldsRoller
+
+#endif

@@ -1,0 +1,167 @@
+/*
+ * Benchmark 5 results: the history of point A and of the roller's loads,
+ * the creep ratio, and summary.json with the published DX(A) beside ours.
+ */
+#include <common/io/json_writer.h>
+#include <common/problems/contact_run.h>
+
+#include "rolling_problem.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace ReynoldsRoller
+{
+  namespace
+  {
+    /** The published DX(A) after 360 degrees (mm) and its band (relative):
+     * ../shared/specs/reynolds_roller.md section 1 (code_aster ssnp157a,
+     * NAFEMS). */
+    constexpr double published_dx_a   = -175.0;
+    constexpr double published_band   = 0.02;
+    constexpr double published_angle  = 360.;
+    const char      *published_source = "NAFEMS value quoted by code_aster "
+                                        "test ssnp157a (VALE_REFE = -175.0, "
+                                        "2 %), ../shared/specs/"
+                                        "reynolds_roller.md section 1";
+  } // namespace
+
+
+
+  void
+  RollingProblem::output_results(
+    const Common::Solvers::LoadSteppingStatistics &stepping)
+  {
+    const auto  &out  = parameters.output;
+    const bool   root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const double R    = parameters.geometry.roller_radius;
+    AssertThrow(!records.empty(), ExcMessage("No accepted step."));
+    const StepRecord &last = records.back();
+
+    // Creep ratio DX(A) / (-R theta) once the roller has turned.
+    const auto creep = [R](const StepRecord &r) {
+      const double travel = R * r.angle * numbers::PI / 180.;
+      return travel > 0. ? r.corner_ux[0] / -travel : 0.;
+    };
+    double worst_balance = 0., pressed_force = 0.;
+    for (const auto &r : records)
+      {
+        worst_balance = std::max(worst_balance, r.balance);
+        if (r.angle == 0.)
+          pressed_force = -r.roller_force[1];
+      }
+    // Means over the turn (steps with the roller turned).
+    double       mean_force = 0., mean_torque = 0.;
+    unsigned int n_turned = 0;
+    for (const auto &r : records)
+      if (r.angle > 0.)
+        {
+          mean_force -= r.roller_force[1];
+          mean_torque -= r.roller_moment;
+          ++n_turned;
+        }
+    if (n_turned > 0)
+      {
+        mean_force /= n_turned;
+        mean_torque /= n_turned;
+      }
+
+    if (root)
+      {
+        std::ofstream csv(out.path("history.csv"));
+        csv << "time,indentation_mm,roller_angle_deg,ux_A_mm,"
+               "ux_bottom_left_mm,ux_top_right_mm,ux_bottom_right_mm,"
+               "creep_ratio,roller_force_x_N_per_mm,"
+               "roller_force_y_N_per_mm,driving_torque_N,"
+               "balance_relative_error\n"
+            << std::setprecision(10);
+        for (const auto &r : records)
+          {
+            csv << r.time << ',' << r.indentation << ',' << r.angle;
+            for (const double u : r.corner_ux)
+              csv << ',' << u;
+            csv << ',' << creep(r) << ',' << r.roller_force[0] << ','
+                << r.roller_force[1] << ',' << -r.roller_moment << ','
+                << r.balance << '\n';
+          }
+      }
+    if (root && out.write_plots)
+      {
+        Common::IO::PlotDescription ratio;
+        ratio.title   = "Creep ratio DX(A) / (-R theta)";
+        ratio.x_label = "roller angle [deg]";
+        ratio.y_label = "creep ratio";
+        ratio.series  = {
+           {"history.csv",
+            3,
+            8,
+            "FE, Q" + std::to_string(parameters.mesh.element_degree),
+            "linespoints pt 7 ps 0.4"}};
+        Common::IO::PlotDescription loads;
+        loads.title   = "Loads on the roller (per mm of depth)";
+        loads.x_label = "roller angle [deg]";
+        loads.y_label = "force [N/mm], torque [N]";
+        loads.series  = {
+           {"history.csv", 3, 10, "force, y", "lines lw 2"},
+           {"history.csv", 3, 9, "force, x", "lines lw 2"},
+           {"history.csv", 3, 11, "driving torque", "lines lw 2 dt 2"}};
+        write_plots({{"creep", ratio}, {"roller_loads", loads}});
+      }
+
+    console.stream() << "\nResults" << std::endl;
+    console.print_quantity("Roller angle (clockwise)", "deg", last.angle);
+    console.print_quantity("Point A, u_x", "mm", last.corner_ux[0]);
+    const bool full_turn = std::abs(last.angle - published_angle) < 1e-9;
+    if (full_turn)
+      console.print_quantity("DX(A) / DX(A)_ref",
+                             "",
+                             last.corner_ux[0] / published_dx_a);
+    console.print_quantity("Creep ratio", "", creep(last));
+    console.print_quantity("Vertical force, pressed", "N/mm", pressed_force);
+    console.print_quantity("Largest force balance error", "", worst_balance);
+
+    using Common::IO::JsonObject;
+    JsonObject case_description =
+      Common::Problems::case_summary(parameters,
+                                     parameters.mesh.element_degree,
+                                     mpi_communicator);
+    case_description.set("n_cells_along_length", parameters.mesh.n_cells_length)
+      .set("n_cells_through_thickness", parameters.mesh.n_cells_thickness)
+      .set("roller", "rigid")
+      .set("bottom_free_in_x_from_stage",
+           parameters.supports.bottom_free_stage);
+    const double top              = 0.5 * parameters.geometry.thickness;
+    const auto   contact_distance = [top](const Point<dim> &p) {
+      return std::abs(p[1] - top);
+    };
+    const JsonObject mesh =
+      Common::Problems::mesh_summary<dim>(dof_handler, contact_distance);
+
+    JsonObject results;
+    results.set("roller_angle_deg", last.angle)
+      .set("dx_A_mm", last.corner_ux[0])
+      .set("dx_bottom_left_mm", last.corner_ux[1])
+      .set("dx_top_right_mm", last.corner_ux[2])
+      .set("dx_bottom_right_mm", last.corner_ux[3])
+      .set("creep_ratio", creep(last))
+      .set("vertical_force_pressed_N_per_mm", pressed_force)
+      .set("mean_vertical_force_turning_N_per_mm", mean_force)
+      .set("mean_driving_torque_turning_N", mean_torque)
+      .set("max_force_balance_relative_error", worst_balance);
+
+    JsonObject reference, ratios;
+    reference.set("source", published_source)
+      .set("dx_A_mm", published_dx_a)
+      .set("band_relative", published_band)
+      .set("roller_angle_deg", published_angle);
+    if (full_turn)
+      ratios.set("dx_A_over_reference", last.corner_ux[0] / published_dx_a);
+
+    write_summary(stepping,
+                  {case_description, mesh, results, reference, ratios});
+  }
+} // namespace ReynoldsRoller
