@@ -80,7 +80,9 @@ namespace ReynoldsRoller
       prm.declare_entry("Number of cells along the length",
                         "75",
                         Patterns::Integer(4, 4000),
-                        "Cells along the strip, L1 + L2 (uniform).");
+                        "Cells along the strip, L1 + L2 (uniform); with "
+                        "those through the thickness at most 100000 "
+                        "cells.");
       prm.declare_entry("Number of cells through the thickness",
                         "5",
                         Patterns::Integer(1, 200),
@@ -102,6 +104,17 @@ namespace ReynoldsRoller
         prm.get_integer("Number of cells through the thickness");
     }
     prm.leave_subsection();
+    // Refused before the mesh is built: 1e5 Q2-P1 cells are some 8e5
+    // DoFs, what a direct solver handles on a workstation.
+    constexpr unsigned long max_cells = 100000;
+    const unsigned long     n_cells =
+      static_cast<unsigned long>(n_cells_length) * n_cells_thickness;
+    AssertThrow(n_cells <= max_cells,
+                ExcMessage("Mesh: 'Number of cells along the length' times "
+                           "'Number of cells through the thickness' would "
+                           "make a mesh of " +
+                           std::to_string(n_cells) + " cells, more than " +
+                           std::to_string(max_cells) + "."));
   }
 
 

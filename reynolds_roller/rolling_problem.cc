@@ -262,7 +262,7 @@ namespace ReynoldsRoller
     console.print_quantity("Vertical force on the roller",
                            "N/mm",
                            record.roller_force[1]);
-    console.print_quantity("Driving torque", "N", -record.roller_moment);
+    console.print_quantity("Driving torque", "N", record.roller_moment);
 
     // Free the bottom in x for the stages from the one that frees it: the
     // next step belongs to it once this one ends its predecessor.

@@ -54,8 +54,9 @@ namespace ReynoldsRoller
     /** u_x of each corner (mm), A first. */
     std::array<double, n_corners> corner_ux;
     /** Force of the strip on the roller (N per mm of depth) and its
-     * moment about the roller's axis (N mm per mm; counterclockwise
-     * positive): minus the driving torque. */
+     * moment about the roller's axis (N mm per mm, counterclockwise
+     * positive). The drive balances that moment: the driving torque,
+     * clockwise positive (the sense of the turn), equals it. */
     Tensor<1, 2> roller_force;
     double       roller_moment;
     /** Reaction of the bottom support on the strip (N per mm). */

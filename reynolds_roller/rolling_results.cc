@@ -48,7 +48,7 @@ namespace ReynoldsRoller
         worst_balance = std::max(worst_balance, r.balance);
         if (r.angle == 0.)
           {
-            pressed_force = -r.roller_force[1];
+            pressed_force = r.roller_force[1];
             pressed_ux    = r.corner_ux[0];
           }
       }
@@ -65,8 +65,8 @@ namespace ReynoldsRoller
     for (const auto &r : records)
       if (r.angle > 0.)
         {
-          mean_force -= r.roller_force[1];
-          mean_torque -= r.roller_moment;
+          mean_force += r.roller_force[1];
+          mean_torque += r.roller_moment;
           ++n_turned;
         }
     if (n_turned > 0)
@@ -90,7 +90,7 @@ namespace ReynoldsRoller
             for (const double u : r.corner_ux)
               csv << ',' << u;
             csv << ',' << creep(r, 0.) << ',' << r.roller_force[0] << ','
-                << r.roller_force[1] << ',' << -r.roller_moment << ','
+                << r.roller_force[1] << ',' << r.roller_moment << ','
                 << r.balance << ',' << creep(r, pressed_ux) << '\n';
           }
       }

@@ -218,6 +218,24 @@ APPS = {
              ("Mesh", "Number of cells through the thickness", "1000000")],
         ],
     },
+    "reynolds_roller": {
+        "production": "reynolds_roller/reynolds_roller_mu03.prm",
+        # Pressing 1 mm in 2 steps and 2 degrees of the turn in 1 step on
+        # 30 x 2 cells.
+        "coarse": [("Mesh", "Number of cells along the length", "30"),
+                   ("Mesh", "Number of cells through the thickness", "2"),
+                   ("Load program/Stage 1", "Number of steps", "2"),
+                   ("Load program/Stage 1", "Indentation", "1"),
+                   ("Load program/Stage 2", "Number of steps", "1"),
+                   ("Load program/Stage 2", "Roller angle", "2")],
+        "huge": [
+            [("Mesh", "Number of cells along the length", "1000000")],
+            [("Mesh", "Number of cells through the thickness", "1000000")],
+            [("Mesh", "Number of cells along the length", "4294967296")],
+            [("Mesh", "Number of cells along the length", "4000"),
+             ("Mesh", "Number of cells through the thickness", "200")],
+        ],
+    },
 }
 
 OUTPUT = [("Output", "Output directory", "results"),
@@ -403,7 +421,10 @@ def entry_names(key, value, path=()):
 
 
 def misspell(word, rng):
-    """word with one letter dropped, doubled or swapped with the next."""
+    """word with one letter dropped, doubled or swapped with the next (an
+    empty word becomes a letter)."""
+    if not word:
+        return "x"
     letters = [i for i, c in enumerate(word) if c.isalpha()]
     i = rng.choice(letters) if letters else 0
     how = rng.choice(["drop", "double", "swap"])

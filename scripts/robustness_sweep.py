@@ -77,6 +77,7 @@ HEADLINE = {
     "punch3d": ("results", "pressure_at_centre_MPa"),
     "loaded_pin": ("results", "pin_centre_ux_mm"),
     "sheet_forming": ("results", "angle_after_release_deg"),
+    "reynolds_roller": ("results", "dx_A_mm"),
 }
 FORCE_BALANCE_TOLERANCE = 1e-6
 
@@ -224,6 +225,39 @@ VARIATIONS = {
             ("first step 1e-6 of the load",
              "the strip rests on the die and lifts off at once; the forming stage "
              "is one channel program, varied by its number of steps")],
+    },
+    "reynolds_roller": {
+        # The fuzz harness's coarse case: 30 x 2 cells pressed 1 mm, then 2
+        # degrees of the turn. Without friction nothing holds the strip in
+        # x but its bottom.
+        "runs": [("coarse case", [])]
+        + [(f"mu {mu:g}", friction(mu) + ([("Supports", "Bottom free in x from stage", "0")]
+                                          if mu == 0 else []))
+           for mu in MUS]
+        + [(f"{n} rolling steps", [("Load program/Stage 2", "Number of steps", str(n))])
+           for n in STEPS]
+        + [("first step 1e-6 of the indentation",
+            [("Load program", "Number of stages", "3"),
+             ("Load program/Stage 1", "Number of steps", "1"),
+             ("Load program/Stage 1", "Indentation", "1e-06"),
+             ("Load program/Stage 2", "Name", "pressing"),
+             ("Load program/Stage 2", "Number of steps", "2"),
+             ("Load program/Stage 2", "Indentation", "1"),
+             ("Load program/Stage 2", "Roller angle", "0"),
+             ("Load program/Stage 3", "Name", "rolling"),
+             ("Load program/Stage 3", "Number of steps", "1"),
+             ("Load program/Stage 3", "Roller angle", "2")])]
+        + [(f"Q{p}", degree(p)) for p in (1, 2)]
+        + [(f"penalty {k:g} MPa/mm, mu 0",
+            penalty(k) + friction(0) + [("Supports", "Bottom free in x from stage", "0")])
+           for k in PENALTIES],
+        "not_available": [
+            ("stiffness ratio, rigid bodies", "the roller is rigid (the specification's "
+             "S2 model); an elastic roller is not built yet"),
+            ("non-matching meshes", "the roller is an analytic surface: there is one mesh"),
+            ("interior nodes perturbed", "the strip's mesh has no perturbation entry yet"),
+            ("initial gaps and overlaps", "the specification places the roller touching "
+             "the strip")],
     },
 }
 
