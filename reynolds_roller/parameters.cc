@@ -2,6 +2,8 @@
 
 #include <common/io/parameter_values.h>
 
+#include <sstream>
+
 namespace ReynoldsRoller
 {
   void
@@ -162,7 +164,8 @@ namespace ReynoldsRoller
     return {{"Indentation",
              "Upward displacement of the strip's bottom at the end of the "
              "stage, which presses the strip onto the roller (the "
-             "benchmark: 3, then held). Units: mm, not negative."},
+             "benchmark: 3, then held). Units: mm, from 0 to less than "
+             "half the strip's thickness."},
             {"Roller angle",
              "Clockwise rotation of the roller about its fixed axis at the "
              "end of the stage, seen from +z with x to the right and y up "
@@ -201,10 +204,18 @@ namespace ReynoldsRoller
                                                              load_channels());
     supports.parse_parameters(prm, load_program.stages.size());
     for (unsigned int s = 0; s < load_program.stages.size(); ++s)
-      AssertThrow(load_program.stages[s].end_values.at("Indentation") >= 0.,
-                  ExcMessage("Load program/Stage " + std::to_string(s + 1) +
-                             ": 'Indentation' must not be negative (the "
-                             "bottom pushes the strip onto the roller)."));
+      {
+        const double d = load_program.stages[s].end_values.at("Indentation");
+        std::ostringstream text;
+        text << "Load program/Stage " << s + 1
+             << ": 'Indentation' must lie in [0, H/2) = [0, "
+             << 0.5 * geometry.thickness
+             << ") mm (the bottom pushes the strip onto the roller, by less "
+                "than half its thickness), got "
+             << d << ".";
+        AssertThrow(d >= 0. && d < 0.5 * geometry.thickness,
+                    ExcMessage(text.str()));
+      }
     rubber_material.parse_parameters(prm,
                                      "Rubber material",
                                      solid.finite_strain());

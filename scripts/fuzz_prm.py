@@ -246,9 +246,10 @@ OUTPUT = [("Output", "Output directory", "results"),
 # Entries that take free text (any value is valid), and entries whose
 # value is a number or empty; the others are typed by their default.
 FREE_TEXT = {"Name"}
-NUMBER_OR_EMPTY = {"Load factor", "Punch displacement", "Die displacement"}
+NUMBER_OR_EMPTY = {"Load factor", "Punch displacement", "Die displacement", "Indentation",
+                   "Roller angle"}
 INTEGER_KEY = re.compile(r"^(Number of .*|Maximum (number of )?(iterations|augmentations)"
-                         r"|Element degree|.*boundary id|Release stage)$")
+                         r"|Element degree|.*boundary id|Release stage|Bottom free in x from stage)$")
 STRUCTURE_NAMES = ["subsection", "'end'"]
 # An empty file is refused as empty, or for an entry it lacks.
 EMPTY_NAMES = ["empty", "no entr", "missing"]

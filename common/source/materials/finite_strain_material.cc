@@ -365,7 +365,8 @@ namespace Common
                                ": Poisson's ratio must lie in (-1, 0.5)" +
                                (may_be_incompressible ?
                                   std::string(" or be 0.5 (incompressible)") :
-                                  std::string(" for the ") + name + " law") +
+                                  std::string(" for the ") + name +
+                                    " law ('Finite strain model')") +
                                ", got " + number(poisson_ratio) + "."));
         if (model == FiniteStrainModel::j2_plasticity)
           hardening.parse_parameters(prm, youngs_modulus, subsection);

@@ -32,6 +32,17 @@ namespace Common
         }
       else
         {
+          prm.enter_subsection(subsection);
+          const double nu = prm.get_double("Poisson's ratio");
+          prm.leave_subsection();
+          AssertThrow(nu < 0.5,
+                      ExcMessage(subsection +
+                                 ": Poisson's ratio must lie in (-1, 0.5), "
+                                 "got " +
+                                 std::to_string(nu) +
+                                 ": an incompressible body needs "
+                                 "'Kinematics = finite strain' in "
+                                 "subsection Solid."));
           linear_elastic.parse_parameters(prm, subsection);
           youngs_modulus = linear_elastic.youngs_modulus;
           poisson_ratio  = linear_elastic.poisson_ratio;

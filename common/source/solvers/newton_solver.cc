@@ -87,7 +87,12 @@ namespace Common
       {
         max_iterations = prm.get_integer("Maximum number of iterations");
         tolerance      = prm.get_double("Tolerance");
-        step_tolerance = prm.get_double("Step tolerance");
+        AssertThrow(tolerance > 0.,
+                    ExcMessage("Nonlinear solver: 'Tolerance' must be "
+                               "positive (a relative residual of exactly zero "
+                               "is never reached), got " +
+                               std::to_string(tolerance) + "."));
+        step_tolerance            = prm.get_double("Step tolerance");
         step_test_residual_bound  = prm.get_double("Step test residual bound");
         linear_tolerance_factor   = prm.get_double("Linear tolerance factor");
         extrapolate_initial_guess = prm.get_bool("Extrapolate initial guess");
