@@ -2,6 +2,7 @@
 
 #include <common/io/parameter_values.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace ReynoldsRoller
@@ -169,8 +170,9 @@ namespace ReynoldsRoller
             {"Roller angle",
              "Clockwise rotation of the roller about its fixed axis at the "
              "end of the stage, seen from +z with x to the right and y up "
-             "(the benchmark: 0 while pressing, then 360). Units: "
-             "degrees."}};
+             "(the benchmark: 0 while pressing, then 360); the strip "
+             "travels about R theta, which must leave the roller on it. "
+             "Units: degrees."}};
   }
 
 
@@ -215,6 +217,22 @@ namespace ReynoldsRoller
              << d << ".";
         AssertThrow(d >= 0. && d < 0.5 * geometry.thickness,
                     ExcMessage(text.str()));
+        // The strip travels about R theta against the turn: the roller
+        // must stay on it, a radius from its end.
+        const double angle =
+          load_program.stages[s].end_values.at("Roller angle");
+        const double travel =
+          geometry.roller_radius * std::abs(angle) * numbers::PI / 180.;
+        const double room =
+          (angle >= 0. ? geometry.length_ahead : geometry.length_behind) -
+          geometry.roller_radius;
+        std::ostringstream turn;
+        turn << "Load program/Stage " << s + 1
+             << ": 'Roller angle' turns the strip by about R theta = " << travel
+             << " mm, more than the " << room
+             << " mm of strip beyond the roller's contact zone, got " << angle
+             << ".";
+        AssertThrow(travel <= room, ExcMessage(turn.str()));
       }
     rubber_material.parse_parameters(prm,
                                      "Rubber material",

@@ -49,15 +49,17 @@ namespace Common
                           "unit penetration. Units: MPa/mm (N/mm^3).");
         prm.declare_entry("NCP constant factor",
                           "1.0",
-                          Patterns::Double(0.),
+                          Patterns::Double(0., 1e3),
                           "Lagrange multipliers only: factor c_N in the "
                           "complementarity constant c = c_N E/h of the "
                           "semismooth Newton method (E: secondary Young's "
                           "modulus, h: local mesh size). Affects the "
-                          "iteration path only. Dimensionless, > 0.");
+                          "iteration path only. Dimensionless, > 0 and at "
+                          "most 1000 (1e6 stalled the iteration of a "
+                          "fuzzed input).");
         prm.declare_entry("Tangential NCP constant factor",
                           "0.5",
-                          Patterns::Double(0.),
+                          Patterns::Double(0., 1e3),
                           "Coulomb friction only: factor c_T in the "
                           "tangential complementarity constant c = c_T E/h "
                           "that weighs the slip increment against the "
@@ -66,7 +68,7 @@ namespace Common
                           "once its traction nears the bound, which avoids "
                           "stick/slip cycling where nearly every node "
                           "sticks. Affects the iteration path only. "
-                          "Dimensionless, > 0.");
+                          "Dimensionless, > 0 and at most 1000.");
         prm.declare_entry("Search distance",
                           "5.0",
                           Patterns::Double(0.),
