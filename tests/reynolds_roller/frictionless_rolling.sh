@@ -20,7 +20,8 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-cat > "$work/case.prm" <<PRM
+. "$(dirname "$0")/../run_case.sh"
+run_case "$app" "$work" case "$(cat <<PRM
 include $src/parameters/reynolds_roller/reynolds_roller_mu03.prm
 subsection Mesh
   set Number of cells along the length      = 60
@@ -42,18 +43,8 @@ subsection Load program
     set Roller angle    = 90
   end
 end
-subsection Output
-  set Output directory       = $work/case
-  set Write graphical output = false
-  set Write plots            = false
-  set Verbosity              = normal
-end
 PRM
-if ! "$app" "$work/case.prm" > "$work/case.log" 2>&1; then
-  tail -20 "$work/case.log"
-  echo "frictionless_rolling.sh: the run did not complete"
-  exit 1
-fi
+)"
 
 python3 - "$work/case/history.csv" <<'PY'
 import csv, sys

@@ -10,7 +10,7 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-. "$(dirname "$0")/run_case.sh"
+. "$(dirname "$0")/../run_case.sh"
 run_case "$app" "$work" elastic "$(cat <<PRM
 include $src/parameters/sheet_forming/sheet_forming_mu01342.prm
 subsection Mesh

@@ -13,7 +13,7 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-. "$(dirname "$0")/run_case.sh"
+. "$(dirname "$0")/../run_case.sh"
 for extrapolate in false true; do
   run_case "$app" "$work" "extrapolate_$extrapolate" "$(cat <<PRM
 include $src/parameters/sheet_forming/sheet_forming_mu01342.prm

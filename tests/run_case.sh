@@ -1,4 +1,4 @@
-# Shared by the sheet_forming test scripts: run_case APP WORK NAME PRM_BODY
+# Shared by the application test scripts: run_case APP WORK NAME PRM_BODY
 # writes WORK/NAME.prm (PRM_BODY, then output settings into WORK/NAME),
 # runs APP on it and on failure prints the end of its log and exits 1.
 run_case() {
