@@ -163,21 +163,24 @@ namespace ReynoldsRoller
         bottom_y_dofs.push_back(dof);
     }
 
-    setup_contact_problem(
-      Common::Physics::create_solid_operator<dim>(
-        parameters.solid,
-        mapping,
-        fe,
-        {{MaterialIds::strip, parameters.rubber_material},
-         {MaterialIds::roller_carrier, parameters.rubber_material}}),
+    auto geometry =
       std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
         dof_handler,
         mapping,
         BoundaryIds::top,
         std::vector<Common::Contact::RigidTool<dim>>{make_roller()},
         parameters.contact.search_distance,
-        false),
-      parameters.rubber_material.youngs_modulus);
+        false);
+    geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
+    setup_contact_problem(Common::Physics::create_solid_operator<dim>(
+                            parameters.solid,
+                            mapping,
+                            fe,
+                            {{MaterialIds::strip, parameters.rubber_material},
+                             {MaterialIds::roller_carrier,
+                              parameters.rubber_material}}),
+                          std::move(geometry),
+                          parameters.rubber_material.youngs_modulus);
 
     // Held in x while pressing.
     if (parameters.supports.bottom_free_stage != 1)

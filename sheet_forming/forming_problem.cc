@@ -207,6 +207,15 @@ namespace SheetForming
     }
 
     const double E = parameters.sheet_material.youngs_modulus;
+    auto         geometry =
+      std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+        dof_handler,
+        mapping,
+        BoundaryIds::surface,
+        make_tools(),
+        parameters.contact.search_distance,
+        false);
+    geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
     setup_contact_problem(
       Common::Physics::create_solid_operator<dim>(
         parameters.solid,
@@ -215,13 +224,7 @@ namespace SheetForming
         {{MaterialIds::sheet, parameters.sheet_material},
          {MaterialIds::punch_carrier, parameters.sheet_material},
          {MaterialIds::die_carrier, parameters.sheet_material}}),
-      std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
-        dof_handler,
-        mapping,
-        BoundaryIds::surface,
-        make_tools(),
-        parameters.contact.search_distance,
-        false),
+      std::move(geometry),
       E);
   }
 

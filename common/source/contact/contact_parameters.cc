@@ -102,6 +102,21 @@ namespace Common
           "semismooth Newton method release it one node per iteration. "
           "Affects the iteration path only.");
         prm.declare_entry(
+          "Rigid tool gap",
+          "mortar",
+          Patterns::Selection("mortar|nodal"),
+          "The gap of a secondary node against an analytic rigid tool, "
+          "with rows in the current configuration. mortar: the "
+          "dual-weighted mean gap over the node's faces (Popp et al.), "
+          "which sees the tool's curvature between the nodes: a closed "
+          "node stands h^2/(12 R) off a tool of radius R (mm, h the face "
+          "length), and a node next to a line contact may need a "
+          "negative pressure. nodal: the signed distance of the node "
+          "itself to its closest point on the tool (node to rigid "
+          "surface), the contact force along the tool's normal there; the "
+          "faces between closed nodes may cut into a curved tool by up to "
+          "h^2/(8 R). Ignored for a meshed primary surface.");
+        prm.declare_entry(
           "Configuration",
           "automatic",
           Patterns::Selection("automatic|reference|current"),
@@ -143,6 +158,9 @@ namespace Common
         initial_active_set      = prm.get("Initial active set") == "touching" ?
                                     InitialActiveSet::touching :
                                     InitialActiveSet::nearest_per_body;
+        rigid_tool_gap          = prm.get("Rigid tool gap") == "nodal" ?
+                                    RigidToolGap::nodal :
+                                    RigidToolGap::mortar;
         const std::string where = prm.get("Configuration");
         configuration = where == "current"   ? ContactConfiguration::current :
                         where == "reference" ? ContactConfiguration::reference :

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 
 namespace Common
 {
@@ -190,6 +191,7 @@ namespace Common
       target.set_free_edge_extension(0.05);
       // Rows integrated again at every iterate: the gap's own gradient.
       target.set_tool_normals(true);
+      target.set_nodal_tool_gap(rigid_tool_gap == RigidToolGap::nodal);
       if (primary_surface != nullptr)
         target.reinit(secondary_surface,
                       *primary_surface,
@@ -529,6 +531,67 @@ namespace Common
 
     template <int dim>
     void
+    CurrentMortarGeometry<dim>::set_rigid_tool_gap(const RigidToolGap gap)
+    {
+      rigid_tool_gap = gap;
+    }
+
+
+
+    template <int dim>
+    std::string
+    CurrentMortarGeometry<dim>::inadmissible_state() const
+    {
+      if (tools.empty())
+        return std::string();
+      // The deepest node of the rows this rank integrates, then the
+      // deepest over the ranks (the lowest rank names it on a tie).
+      double       depth        = 0.;
+      unsigned int deepest_tool = 0;
+      Point<dim>   deepest_point;
+      for (unsigned int j = 0; j < secondary->n_nodes(); ++j)
+        if (mortar.is_integrated(j))
+          for (unsigned int i = 0; i < tools.size(); ++i)
+            {
+              const Point<dim> &x = secondary->node(j).position;
+              const double      d = -placed[i]->closest_point(x).distance;
+              if (d > depth)
+                {
+                  depth         = d;
+                  deepest_tool  = i;
+                  deepest_point = x;
+                }
+            }
+      const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+      const double   largest = Utilities::MPI::max(depth, comm);
+      if (!(largest > search_distance))
+        return std::string();
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int namer =
+        Utilities::MPI::min(depth == largest ? rank : ~0u, comm);
+      std::vector<double> named(dim + 1, 0.);
+      if (rank == namer)
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            named[c] = deepest_point[c];
+          named[dim] = deepest_tool;
+        }
+      Utilities::MPI::sum(named, comm, named);
+      std::ostringstream message;
+      message << "the secondary node at (";
+      for (unsigned int c = 0; c < dim; ++c)
+        message << (c > 0 ? ", " : "") << named[c];
+      message << ") lies " << largest << " mm inside the tool '"
+              << tools[static_cast<unsigned int>(named[dim])].name
+              << "', beyond the search distance (" << search_distance
+              << " mm): the iterate has passed through the tool";
+      return message.str();
+    }
+
+
+
+    template <int dim>
+    void
     CurrentMortarGeometry<dim>::set_load_state(const Solvers::LoadState &state)
     {
       for (unsigned int i = 0; i < tools.size(); ++i)
@@ -786,13 +849,15 @@ namespace Common
           tool.name                = name;
           tool.surface             = rigid;
           tool.reference_node_dofs = reference_node_dofs;
-          return std::make_unique<CurrentMortarGeometry<dim>>(
+          auto geometry = std::make_unique<CurrentMortarGeometry<dim>>(
             dof_handler,
             mapping,
             contact.secondary_boundary_id,
             std::vector<RigidTool<dim>>{tool},
             contact.search_distance,
             axisymmetric);
+          geometry->set_rigid_tool_gap(contact.rigid_tool_gap);
+          return geometry;
         }
       return std::make_unique<ReferenceMortarGeometry<dim>>(
         dof_handler,

@@ -518,7 +518,7 @@ namespace Common
               rows[face.nodes[a]].mesh_size =
                 std::max(rows[face.nodes[a]].mesh_size, size);
             }
-          if (!paired_faces[s])
+          if (!paired_faces[s] || nodal_tool_gap)
             continue;
 
           bool covered = true;
@@ -581,6 +581,56 @@ namespace Common
           // A partner node stores its point less the displacement of the
           // surface's reference node, so that reference position plus
           // displacement is where it is now.
+          if (nodal_tool_gap)
+            {
+              for (unsigned int i = 0; i < n_surfaces; ++i)
+                primary_nodes[j * n_surfaces + i] = {node.reference_position,
+                                                     partners[i].dofs};
+              row.has_partner = false;
+              if (!integrated[j] || row.weight == 0.)
+                continue;
+              // The nearest surface that faces the node.
+              unsigned int best = numbers::invalid_unsigned_int;
+              typename RigidSurface<dim>::ClosestPoint nearest;
+              for (unsigned int i = 0; i < n_surfaces; ++i)
+                {
+                  const auto cp =
+                    partners[i].surface->closest_point(node.position);
+                  if (std::abs(cp.distance) > search_distance ||
+                      cp.normal * node.normal >= 0.)
+                    continue;
+                  if (best == numbers::invalid_unsigned_int ||
+                      std::abs(cp.distance) < std::abs(nearest.distance))
+                    {
+                      best    = i;
+                      nearest = cp;
+                    }
+                }
+              if (best == numbers::invalid_unsigned_int)
+                continue;
+              const unsigned int k = j * n_surfaces + best;
+              primary_nodes[k].reference_position =
+                Point<dim>(nearest.point - partners[best].displacement);
+              row.has_partner = true;
+              row.primary_weights.emplace_back(k, row.weight);
+              row.nodal_gap = nearest.distance;
+              // The inward normal of the surface: the gradient of the
+              // node's distance, within the symmetry planes it lies on.
+              if (tool_normals)
+                {
+                  Tensor<1, dim> m = -nearest.normal;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    if (node.on_symmetry_plane[c])
+                      m[c] = 0.;
+                  if (m * node.normal > std::sqrt(0.5) * m.norm())
+                    row.normal = m / m.norm();
+                }
+              row.reference_weighted_gap =
+                row.weight *
+                (row.normal * (primary_nodes[k].reference_position -
+                               node.reference_position));
+              continue;
+            }
           Tensor<1, dim> gap;
           for (unsigned int i = 0; i < n_surfaces; ++i)
             {
@@ -881,6 +931,15 @@ namespace Common
     MortarCoupling<dim>::set_tool_normals(const bool use)
     {
       tool_normals = use;
+    }
+
+
+
+    template <int dim>
+    void
+    MortarCoupling<dim>::set_nodal_tool_gap(const bool use)
+    {
+      nodal_tool_gap = use;
     }
 
 

@@ -778,6 +778,17 @@ namespace Common
             again.active_set_changes.end());
           ++statistics.n_augmentations;
         }
+      // An equilibrium in which a node has passed through a tool, where the
+      // contact no longer sees it, is not a solution.
+      if (statistics.converged)
+        {
+          const std::string why = geometry.inadmissible_state();
+          if (!why.empty())
+            {
+              statistics.converged = false;
+              statistics.failure   = why;
+            }
+        }
       solve_times.newton += IO::seconds_since(start);
       solve_times.contact_cpu += IO::process_cpu_seconds() - cpu_start;
       return statistics;

@@ -91,6 +91,20 @@ namespace Common
         return false;
       }
 
+      /**
+       * @brief Why the state of the last update() cannot be accepted, or
+       * an empty string if it can. A secondary node inside a rigid tool
+       * deeper than the search distance is no longer seen by the pairing:
+       * an iterate has carried it through the tool, and an equilibrium
+       * without that contact is not a solution. Empty by default.
+       * Collective.
+       */
+      virtual std::string
+      inadmissible_state() const
+      {
+        return std::string();
+      }
+
       /** @brief Move what the load program prescribes (a tool's rotation)
        * to @p state; called at the start of every load step, before
        * update(). Nothing by default. */

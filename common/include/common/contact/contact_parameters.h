@@ -57,6 +57,15 @@ namespace Common
       nearest_per_body
     };
 
+    /** Values of the parameter "Rigid tool gap" in subsection "Contact". */
+    enum class RigidToolGap
+    {
+      /** The dual-weighted mean gap of the node's faces (mortar). */
+      mortar,
+      /** The gap of the node itself, to its closest point on the tool. */
+      nodal
+    };
+
     /**
      * @brief One contact pair: a primary (projection target) and a secondary
      * (integration and multiplier) surface, with its enforcement.
@@ -112,6 +121,9 @@ namespace Common
       ContactConfiguration configuration = ContactConfiguration::automatic;
       /** Which nodes the first active set closes (iteration path only). */
       InitialActiveSet initial_active_set = InitialActiveSet::touching;
+      /** The gap of a secondary node against an analytic rigid tool in the
+       * current configuration. */
+      RigidToolGap rigid_tool_gap = RigidToolGap::mortar;
     };
   } // namespace Contact
 } // namespace Common

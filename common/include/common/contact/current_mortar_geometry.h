@@ -158,6 +158,12 @@ namespace Common
       bool
       is_current_configuration() const override;
 
+      /** @brief A secondary node whose signed distance to a rigid tool
+       * (RigidSurface::closest_point()) is below minus the search
+       * distance, named with its position, the tool and the depth. */
+      std::string
+      inadmissible_state() const override;
+
       /** @brief The tools' rotations at @p state. */
       void
       set_load_state(const Solvers::LoadState &state) override;
@@ -202,6 +208,12 @@ namespace Common
        * reference nodes. */
       std::vector<dealii::types::global_dof_index>
       dofs_read_by_update() const override;
+
+      /** @brief How the rows against the rigid tools measure the gap
+       * (ContactParameters::rigid_tool_gap); mortar unless set. Call
+       * before reinit(). */
+      void
+      set_rigid_tool_gap(const RigidToolGap gap);
 
       /** @brief Number of rigid tools (0 for a meshed primary surface). */
       unsigned int
@@ -248,13 +260,15 @@ namespace Common
       n_pattern_changes() const;
 
     private:
-      const dealii::DoFHandler<dim>                  &dof_handler;
-      const dealii::Mapping<dim>                     &mapping;
-      const dealii::types::boundary_id                secondary_id;
-      const dealii::types::boundary_id                primary_id;
-      const std::vector<RigidTool<dim>>               tools;
-      const double                                    search_distance;
-      const bool                                      axisymmetric;
+      const dealii::DoFHandler<dim>    &dof_handler;
+      const dealii::Mapping<dim>       &mapping;
+      const dealii::types::boundary_id  secondary_id;
+      const dealii::types::boundary_id  primary_id;
+      const std::vector<RigidTool<dim>> tools;
+      const double                      search_distance;
+      /** How the rows against the rigid tools measure the gap. */
+      RigidToolGap rigid_tool_gap = RigidToolGap::mortar;
+      const bool   axisymmetric;
       const dealii::AffineConstraints<double>        *constraints = nullptr;
       std::vector<bool>                               integrated_rows;
       std::vector<std::unique_ptr<RigidSurface<dim>>> placed;

@@ -234,6 +234,18 @@ namespace Common
       set_tool_normals(const bool use);
 
       /**
+       * @brief Rows against analytic rigid surfaces from the node itself
+       * (node to rigid surface) instead of its faces: row j pairs with
+       * the nearest surface whose closest point to the node lies within
+       * the search distance and faces the node, M_jk = D_j at that point,
+       * so that the weighted gap is D_j times the node's signed distance
+       * to the surface, and the row's normal is the surface's inward
+       * normal there (with set_tool_normals()). Call before reinit().
+       */
+      void
+      set_nodal_tool_gap(const bool use);
+
+      /**
        * @brief Adapt the rows to the hanging nodes of the secondary
        * surface; call after reinit().
        *
@@ -375,6 +387,9 @@ namespace Common
       /** Rows against rigid surfaces take their normal
        * (set_tool_normals()). */
       bool tool_normals = false;
+      /** Rows against rigid surfaces from the node itself
+       * (set_nodal_tool_gap()). */
+      bool nodal_tool_gap = false;
 
       /** The parameter box of each primary face, extended past its free
        * edges by free_edge_extension, and in 3D past its edges on a
