@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <numeric>
 
 namespace ReynoldsRoller
 {
@@ -75,6 +76,38 @@ namespace ReynoldsRoller
         mean_torque /= n_turned;
       }
 
+    // Steadiness of the rolling: the creep ratio of A's motion in each
+    // 45-degree window of the last half turn, u_x(A) interpolated linearly
+    // in the roller angle between accepted steps; the spread is
+    // (largest - smallest) / mean.
+    std::vector<double> window_ratios;
+    double              window_spread = 0.;
+    const auto          ux_at         = [this](const double angle) {
+      for (unsigned int i = 1; i < records.size(); ++i)
+        if (records[i].angle >= angle && records[i - 1].angle < angle)
+          {
+            const StepRecord &a = records[i - 1], &b = records[i];
+            const double      w = (angle - a.angle) / (b.angle - a.angle);
+            return (1. - w) * a.corner_ux[0] + w * b.corner_ux[0];
+          }
+      return records.back().corner_ux[0];
+    };
+    if (last.angle >= 180. + 45.)
+      {
+        for (unsigned int k = 0; k < 4; ++k)
+          {
+            const double start = last.angle - 180. + 45. * k;
+            window_ratios.push_back((ux_at(start + 45.) - ux_at(start)) /
+                                    -(R * 45. * numbers::PI / 180.));
+          }
+        const auto [lo, hi] =
+          std::minmax_element(window_ratios.begin(), window_ratios.end());
+        window_spread =
+          (*hi - *lo) /
+          (0.25 *
+           std::accumulate(window_ratios.begin(), window_ratios.end(), 0.));
+      }
+
     if (root)
       {
         std::ofstream csv(out.path("history.csv"));
@@ -133,6 +166,11 @@ namespace ReynoldsRoller
     console.print_quantity("Creep ratio while turning",
                            "",
                            creep(last, pressed_ux));
+    if (!window_ratios.empty())
+      console.print_quantity(
+        "Creep ratio spread, last 180 deg (45-deg windows)",
+        "",
+        window_spread);
     console.print_quantity("Vertical force, pressed", "N/mm", pressed_force);
     console.print_quantity("Largest force balance error", "", worst_balance);
 
@@ -166,6 +204,15 @@ namespace ReynoldsRoller
       .set("mean_vertical_force_turning_N_per_mm", mean_force)
       .set("mean_driving_torque_turning_N", mean_torque)
       .set("max_force_balance_relative_error", worst_balance);
+
+    if (!window_ratios.empty())
+      {
+        for (unsigned int k = 0; k < window_ratios.size(); ++k)
+          results.set("creep_ratio_last_half_turn_window_" +
+                        std::to_string(k + 1),
+                      window_ratios[k]);
+        results.set("creep_ratio_last_half_turn_spread", window_spread);
+      }
 
     JsonObject reference, ratios;
     reference.set("source", published_source)
