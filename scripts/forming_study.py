@@ -141,7 +141,7 @@ def three_point_bending_force(stroke, production):
 
 def run_bending(app, mu, degree, mesh, stroke, out_dir, time_limit):
     """One elastic run to the punch displacement stroke (two forming steps,
-    a held step, no release) on mesh "TxL" at a degree; its punch force
+    two held steps in the production file's later stages, no release) on mesh "TxL" at a degree; its punch force
     against three_point_bending_force()."""
     thickness, length = (int(n) for n in mesh.split("x"))
     production = os.path.join(ROOT, f"parameters/sheet_forming/sheet_forming_mu{mu}.prm")
@@ -154,6 +154,9 @@ def run_bending(app, mu, degree, mesh, stroke, out_dir, time_limit):
         "Load program/Stage 1": {"Number of steps": 2,
                                  "Punch displacement": stroke},
         "Load program/Stage 2": {"Number of steps": 1,
+                                 "Punch displacement": stroke,
+                                 "Die displacement": 0},
+        "Load program/Stage 3": {"Number of steps": 1,
                                  "Punch displacement": stroke,
                                  "Die displacement": 0},
         "Release": {"Release stage": 0},

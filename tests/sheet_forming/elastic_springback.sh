@@ -2,7 +2,7 @@
 # Requirement: a stroke that stays elastic springs back to flat. The punch
 # goes down 0.5 mm (bending strain below 1e-3, the yield strain is
 # 2.75e-3), then punch and die withdraw by 1 mm each, which frees the
-# strip. With no plastic strain the released strip is stress free and
+# strip, and further (the production file's withdrawal stage). With no plastic strain the released strip is stress free and
 # straight: the flange angle after release is 90 degrees to 1e-6, both
 # readings (chord and end tangent), while the forming angle is below 90.
 # Usage: elastic_springback.sh SHEET_FORMING SOURCE_DIR WORK_DIR

@@ -3,7 +3,8 @@
 # iteration path only. The first 4 mm of the forming stroke (coarse mesh,
 # 8 steps, mu = 0.1342, J2 plasticity, no cutback) run twice, from the last
 # accepted state and from the extrapolation of the last two, then held
-# for a step (a new stage, which starts from the last state): the punch
+# for a step in each of two stages (a new stage starts from the last
+# state): the punch
 # force at every step agrees to 1e-7 of the largest force (both runs
 # converge to the Newton tolerance, and the plastic history is that of the
 # same accepted steps), and the extrapolated run needs fewer Newton
@@ -27,6 +28,12 @@ subsection Load program
     set Punch displacement = 4
   end
   subsection Stage 2
+    set Name               = hold
+    set Number of steps    = 1
+    set Punch displacement = 4
+    set Die displacement   = 0
+  end
+  subsection Stage 3
     set Name               = hold
     set Number of steps    = 1
     set Punch displacement = 4
@@ -59,7 +66,7 @@ deviation = max(abs(a - b) for a, b in zip(f0, f1)) / largest
 checks = [
     ("no cutback in either run",
      plain["n_cutbacks"] == 0 and extrapolated["n_cutbacks"] == 0),
-    ("the same 9 steps", len(f0) == len(f1) == 9),
+    ("the same 10 steps", len(f0) == len(f1) == 10),
     ("punch forces agree to 1e-7", deviation <= 1e-7),
     ("fewer Newton iterations when extrapolated",
      extrapolated["total_iterations"] < plain["total_iterations"]),

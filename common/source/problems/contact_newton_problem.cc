@@ -4,9 +4,13 @@
 #include <common/physics/rigid_body.h>
 #include <common/problems/contact_newton_problem.h>
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <chrono>
@@ -351,8 +355,21 @@ namespace Common
                                      solution,
                                      bulk_matrix,
                                      unused);
+      if (stabilized)
+        {
+          FullMatrix<double> k(1, 1);
+          for (const auto i : locally_owned_dofs)
+            {
+              k(0, 0) = stabilization_scale * stabilization_stiffness(i);
+              constraints_dirichlet_and_hanging_nodes
+                .distribute_local_to_global(
+                  k,
+                  std::vector<types::global_dof_index>{i},
+                  bulk_matrix);
+            }
+        }
       bulk_matrix.compress(VectorOperation::add);
-      bulk_matrix_current = solid_operator.is_linear();
+      bulk_matrix_current = solid_operator.is_linear() && !stabilized;
     }
 
 
@@ -405,6 +422,22 @@ namespace Common
                                      system_matrix,
                                      system_rhs);
       load.add(state, constraints, system_rhs);
+      if (stabilized)
+        {
+          FullMatrix<double> k(1, 1);
+          Vector<double>     f(1);
+          for (const auto i : locally_owned_dofs)
+            {
+              k(0, 0) = stabilization_scale * stabilization_stiffness(i);
+              f(0)    = -k(0, 0) * (solution(i) - stabilization_anchor(i));
+              constraints.distribute_local_to_global(
+                k,
+                f,
+                std::vector<types::global_dof_index>{i},
+                system_matrix,
+                system_rhs);
+            }
+        }
       add_geometric_contact_stiffness();
       if (contact_parameters.enforcement == Contact::Enforcement::penalty)
         contact_enforcement->assemble_penalty(constraints,
@@ -565,7 +598,68 @@ namespace Common
       r *= -1.;
       load.add(state, constraints_dirichlet_and_hanging_nodes, r);
       r.compress(VectorOperation::add);
+      if (stabilized)
+        add_stabilization_forces(u, constraints_dirichlet_and_hanging_nodes, r);
       return r;
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::setup_stabilization()
+    {
+      if (stabilization_stiffness.size() > 0)
+        return;
+      // k_i = factor E int N_i dV / h^2 per cell, h the cell's smallest
+      // vertex distance: a spring that moves a cell's nodes together by
+      // its size takes factor times the force that strains it by 1.
+      const double factor = nonlinear_solver_parameters.stabilization_factor;
+      const auto  &fe     = dof_handler.get_fe();
+      const QGauss<dim> quadrature(fe.degree + 1);
+      FEValues<dim>     fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_values | update_JxW_values);
+      stabilization_stiffness.reinit(locally_owned_dofs, mpi_communicator);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      double smallest = std::numeric_limits<double>::infinity();
+      // Every rank holds every cell of a shared triangulation; each adds
+      // to its own DoFs.
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          const double h = cell->minimum_vertex_distance();
+          smallest       = std::min(smallest, h);
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned_dofs.is_element(dofs[i]))
+              {
+                double integral = 0.;
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
+                  integral += fe_values.shape_value(i, q) * fe_values.JxW(q);
+                stabilization_stiffness(dofs[i]) +=
+                  factor * reference_modulus * integral / (h * h);
+              }
+        }
+      stabilization_stiffness.compress(VectorOperation::add);
+      smallest_cell = smallest;
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::add_stabilization_forces(
+      const TrilinosWrappers::MPI::Vector &u,
+      const AffineConstraints<double>     &constraints,
+      TrilinosWrappers::MPI::Vector       &r) const
+    {
+      for (const auto i : locally_owned_dofs)
+        if (!constraints.is_constrained(i))
+          r(i) -= stabilization_scale * stabilization_stiffness(i) *
+                  (u(i) - stabilization_anchor(i));
+      r.compress(VectorOperation::add);
     }
 
 
@@ -714,35 +808,131 @@ namespace Common
 
       // A diverging iterate may produce a non-finite value: Release builds
       // see it in the residual, Debug builds at deal.II's check, which
-      // throws. Either way the step fails and is cut back.
-      Solvers::NewtonStatistics statistics;
-      try
+      // throws. Either way the step fails and is cut back. An iterate far
+      // from equilibrium may give a matrix that cannot be factorised: in a
+      // nonlinear problem that is a failed step like any other, cut back;
+      // in a linear one the model is at fault.
+      const auto newton = [&]() {
+        Solvers::NewtonStatistics result;
+        try
+          {
+            result = Solvers::solve_newton(nonlinear_solver_parameters,
+                                           callbacks,
+                                           verbose);
+          }
+        catch (const StandardExceptions::ExcNumberNotFinite &)
+          {
+            linear_solver.reset();
+            result.converged = false;
+            result.failure   = "non-finite value in an iterate";
+          }
+        catch (const Solvers::ExcFactorisationFailed &failure)
+          {
+            if (!is_nonlinear())
+              throw;
+            linear_solver.reset();
+            result.converged = false;
+            result.failure   = IO::one_line_message(failure);
+          }
+        return result;
+      };
+      Solvers::NewtonStatistics statistics = newton();
+
+      // Pseudo-transient continuation: a failed step is solved again from
+      // its start with springs to the last solution, anchored anew at each
+      // one, until a solve moves nothing; then without them.
+      if (!statistics.converged &&
+          nonlinear_solver_parameters.stabilization_factor > 0.)
         {
-          statistics = Solvers::solve_newton(nonlinear_solver_parameters,
-                                             callbacks,
-                                             verbose);
+          verbose << "  The step failed (" << statistics.failure
+                  << "); stabilized solves from its start" << std::endl;
+          const std::string first_failure = statistics.failure;
+          restore();
+          geometry.set_load_state(state);
+          update_geometry();
+          contact_enforcement->begin_step();
+          setup_stabilization();
+          stabilized          = true;
+          stabilization_scale = 1.;
+          bulk_matrix_current = false;
+          const auto append =
+            [&statistics](const Solvers::NewtonStatistics &more) {
+              statistics.n_iterations += more.n_iterations;
+              statistics.residuals.insert(statistics.residuals.end(),
+                                          more.residuals.begin(),
+                                          more.residuals.end());
+              statistics.active_set_changes.insert(
+                statistics.active_set_changes.end(),
+                more.active_set_changes.begin(),
+                more.active_set_changes.end());
+            };
+          // The springs soften by half after each solve that moves less
+          // than the one before: they carry the state past where it has no
+          // equilibrium, then let it settle. A solve that fails starts
+          // again from its anchor with springs four times as stiff.
+          constexpr unsigned int max_solves = 100;
+          double                 moved      = 0.;
+          double       last_moved = std::numeric_limits<double>::infinity();
+          unsigned int n_solves   = 0;
+          Solvers::NewtonStatistics again;
+          while (n_solves < max_solves)
+            {
+              stabilization_anchor = solution_owned;
+              again                = newton();
+              append(again);
+              ++n_solves;
+              if (!again.converged)
+                {
+                  verbose << "  Stabilized solve " << n_solves << " (springs x "
+                          << IO::Console::format(stabilization_scale)
+                          << ") failed" << std::endl;
+                  if (stabilization_scale >= 1.)
+                    break;
+                  solution_owned = stabilization_anchor;
+                  solution       = solution_owned;
+                  update_geometry();
+                  stabilization_scale = std::min(1., 4. * stabilization_scale);
+                  continue;
+                }
+              TrilinosWrappers::MPI::Vector change = solution_owned;
+              change -= stabilization_anchor;
+              moved = change.linfty_norm();
+              verbose << "  Stabilized solve " << n_solves << " (springs x "
+                      << IO::Console::format(stabilization_scale)
+                      << "): largest motion " << IO::Console::format(moved)
+                      << " mm" << std::endl;
+              if (moved <= 1e-6 * smallest_cell)
+                break;
+              if (moved < last_moved)
+                stabilization_scale *= 0.5;
+              last_moved = moved;
+            }
+          if (again.converged && moved > 1e-6 * smallest_cell)
+            {
+              again.converged = false;
+              again.failure =
+                "still moving after " + std::to_string(max_solves) + " solves";
+            }
+          stabilized          = false;
+          bulk_matrix_current = false;
+          if (again.converged)
+            {
+              again = newton();
+              append(again);
+              statistics.converged         = again.converged;
+              statistics.converged_on_step = again.converged_on_step;
+              statistics.failure           = again.converged ?
+                                               std::string() :
+                                               first_failure + "; after " +
+                                       std::to_string(n_solves) +
+                                       " stabilized solves: " + again.failure;
+            }
+          else
+            statistics.failure = first_failure +
+                                 "; a stabilized solve failed too (" +
+                                 again.failure + ")";
         }
-      catch (const StandardExceptions::ExcNumberNotFinite &)
-        {
-          linear_solver.reset();
-          statistics.converged = false;
-          statistics.failure   = "non-finite value in an iterate";
-          solve_times.newton += IO::seconds_since(start);
-          return statistics;
-        }
-      // An iterate far from equilibrium may give a matrix that cannot be
-      // factorised: in a nonlinear problem that is a failed step like any
-      // other, cut back; in a linear one the model is at fault.
-      catch (const Solvers::ExcFactorisationFailed &failure)
-        {
-          if (!is_nonlinear())
-            throw;
-          linear_solver.reset();
-          statistics.converged = false;
-          statistics.failure   = IO::one_line_message(failure);
-          solve_times.newton += IO::seconds_since(start);
-          return statistics;
-        }
+
       // Constraints of the solid enforced by an augmented Lagrangian: update
       // the multipliers at the converged state and solve again until the
       // constraints hold.
@@ -762,9 +952,7 @@ namespace Common
             }
           verbose << "  Multiplier update " << statistics.n_augmentations + 1
                   << std::endl;
-          const auto again = Solvers::solve_newton(nonlinear_solver_parameters,
-                                                   callbacks,
-                                                   verbose);
+          const auto again = newton();
           statistics.n_iterations += again.n_iterations;
           statistics.converged         = again.converged;
           statistics.converged_on_step = again.converged_on_step;

@@ -67,6 +67,23 @@ namespace Common
           "near the solution, and fewer contact nodes change status on the "
           "way. Affects the iteration path only.");
         prm.declare_entry(
+          "Stabilization factor",
+          "0",
+          Patterns::Double(0.),
+          "Pseudo-transient continuation of a load step whose iteration "
+          "fails (an unstable sheet whose contact state has no equilibrium "
+          "near the last one): the step is solved again from its start "
+          "with a spring at every free DoF to the last solution, of "
+          "stiffness factor x E int N_i dV / h^2 (E the reference modulus, "
+          "h the cell's smallest vertex distance), anchored anew at each "
+          "solution and softened by half after each, until a solve moves "
+          "no DoF by more than 1e-6 of the smallest cell (at most 40 "
+          "solves); the springs are then removed and the state is solved "
+          "to equilibrium without them, which alone is accepted. The path "
+          "between is a dissipative one, as a snap would take. If a solve "
+          "fails, the step is cut back. "
+          "0: off, a failed step is cut back at once. Dimensionless.");
+        prm.declare_entry(
           "Step test residual bound",
           "1e-6",
           Patterns::Double(0.),
@@ -96,6 +113,7 @@ namespace Common
         step_test_residual_bound  = prm.get_double("Step test residual bound");
         linear_tolerance_factor   = prm.get_double("Linear tolerance factor");
         extrapolate_initial_guess = prm.get_bool("Extrapolate initial guess");
+        stabilization_factor      = prm.get_double("Stabilization factor");
       }
       prm.leave_subsection();
     }

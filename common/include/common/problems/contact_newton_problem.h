@@ -275,6 +275,18 @@ namespace Common
       nodal_reactions(const Solvers::LoadState &state,
                       const ExternalLoad       &load);
 
+      /** The springs of stabilized solves: their stiffness, once. */
+      void
+      setup_stabilization();
+
+      /** Add the springs' forces -k (u - anchor) at @p u to @p r (owned,
+       * compressed), except at DoFs @p constraints fix. */
+      void
+      add_stabilization_forces(
+        const dealii::TrilinosWrappers::MPI::Vector &u,
+        const dealii::AffineConstraints<double>     &constraints,
+        dealii::TrilinosWrappers::MPI::Vector       &r) const;
+
       /** The DoFs this rank stores (owned, partition ghosts, the DoFs of
        * the contact rows it holds and the targets of their constraints),
        * the Dirichlet and hanging-node constraints of those DoFs out of
@@ -367,7 +379,18 @@ namespace Common
 
       const dealii::AffineConstraints<double> *base_constraints = nullptr;
       /** DoFs supported by hold_dofs(), in addition to base_constraints. */
-      std::vector<dealii::types::global_dof_index>      held_dofs;
+      std::vector<dealii::types::global_dof_index> held_dofs;
+      /** Stiffness of the stabilizing spring at each owned DoF (N/mm;
+       * NonlinearSolverParameters::stabilization_factor), set up at the
+       * first stabilized step; its anchor; and whether the springs act. */
+      dealii::TrilinosWrappers::MPI::Vector stabilization_stiffness;
+      dealii::TrilinosWrappers::MPI::Vector stabilization_anchor;
+      bool                                  stabilized = false;
+      /** Factor on the springs' stiffness: 1 at the first stabilized
+       * solve of a step, halved after each. */
+      double stabilization_scale = 1.;
+      /** Smallest cell's smallest vertex distance (mm). */
+      double                                            smallest_cell = 0.;
       std::unique_ptr<Contact::ContactEnforcement<dim>> contact_enforcement;
 
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;

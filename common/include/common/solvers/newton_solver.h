@@ -49,6 +49,9 @@ namespace Common
       /** Start a load step from the linear extrapolation of the last two
        * accepted states of its stage instead of the last one. */
       bool extrapolate_initial_guess = false;
+      /** Pseudo-transient continuation of a failed step: stiffness factor
+       * of the springs to the last state (dimensionless; 0: off). */
+      double stabilization_factor = 0.;
     };
 
     /**
