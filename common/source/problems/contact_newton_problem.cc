@@ -837,6 +837,17 @@ namespace Common
         return result;
       };
       Solvers::NewtonStatistics statistics = newton();
+      // Statistics of a further solve of the same step join the step's.
+      const auto append = [&statistics](const Solvers::NewtonStatistics &more) {
+        statistics.n_iterations += more.n_iterations;
+        statistics.residuals.insert(statistics.residuals.end(),
+                                    more.residuals.begin(),
+                                    more.residuals.end());
+        statistics.active_set_changes.insert(
+          statistics.active_set_changes.end(),
+          more.active_set_changes.begin(),
+          more.active_set_changes.end());
+      };
 
       // Pseudo-transient continuation: a failed step is solved again from
       // its start with springs to the last solution, anchored anew at each
@@ -855,17 +866,6 @@ namespace Common
           stabilized          = true;
           stabilization_scale = 1.;
           bulk_matrix_current = false;
-          const auto append =
-            [&statistics](const Solvers::NewtonStatistics &more) {
-              statistics.n_iterations += more.n_iterations;
-              statistics.residuals.insert(statistics.residuals.end(),
-                                          more.residuals.begin(),
-                                          more.residuals.end());
-              statistics.active_set_changes.insert(
-                statistics.active_set_changes.end(),
-                more.active_set_changes.begin(),
-                more.active_set_changes.end());
-            };
           // The springs soften by half after each solve that moves less
           // than the one before: they carry the state past where it has no
           // equilibrium, then let it settle. A solve that fails starts
@@ -953,17 +953,10 @@ namespace Common
           verbose << "  Multiplier update " << statistics.n_augmentations + 1
                   << std::endl;
           const auto again = newton();
-          statistics.n_iterations += again.n_iterations;
+          append(again);
           statistics.converged         = again.converged;
           statistics.converged_on_step = again.converged_on_step;
           statistics.failure           = again.failure;
-          statistics.residuals.insert(statistics.residuals.end(),
-                                      again.residuals.begin(),
-                                      again.residuals.end());
-          statistics.active_set_changes.insert(
-            statistics.active_set_changes.end(),
-            again.active_set_changes.begin(),
-            again.active_set_changes.end());
           ++statistics.n_augmentations;
         }
       // An equilibrium in which a node has passed through a tool, where the
