@@ -43,6 +43,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -141,16 +142,24 @@ main(int argc, char **argv)
     u.compress(VectorOperation::insert);
   };
 
+  // The rows against the cylinder, measuring the gap as @p gap says.
+  const auto make_geometry = [&](const Common::Contact::RigidToolGap gap) {
+    auto geometry = std::make_unique<Common::Contact::CurrentMortarGeometry<2>>(
+      dof_handler,
+      mapping,
+      top_id,
+      std::vector<Common::Contact::RigidTool<2>>{tool},
+      search,
+      false);
+    geometry->set_rigid_tool_gap(gap);
+    geometry->reinit(constraints);
+    return geometry;
+  };
+
   // Nodal rows: the node's own distance and the circle's normal there.
   {
-    Common::Contact::CurrentMortarGeometry<2> geometry(dof_handler,
-                                                       mapping,
-                                                       top_id,
-                                                       {tool},
-                                                       search,
-                                                       false);
-    geometry.set_rigid_tool_gap(Common::Contact::RigidToolGap::nodal);
-    geometry.reinit(constraints);
+    auto  geometry_ptr = make_geometry(Common::Contact::RigidToolGap::nodal);
+    auto &geometry     = *geometry_ptr;
     lift_strip(-0.01);
     geometry.update(u);
     const auto  &rows       = geometry.coupling();
@@ -187,13 +196,8 @@ main(int argc, char **argv)
   // t(x) the vertical distance from the face to the circle; integrated
   // here with 20 Gauss points per face.
   {
-    Common::Contact::CurrentMortarGeometry<2> geometry(dof_handler,
-                                                       mapping,
-                                                       top_id,
-                                                       {tool},
-                                                       search,
-                                                       false);
-    geometry.reinit(constraints);
+    auto  geometry_ptr = make_geometry(Common::Contact::RigidToolGap::mortar);
+    auto &geometry     = *geometry_ptr;
     lift_strip(-0.01);
     geometry.update(u);
     const auto     &rows    = geometry.coupling();
@@ -239,13 +243,8 @@ main(int argc, char **argv)
 
   // Admissible states.
   {
-    Common::Contact::CurrentMortarGeometry<2> geometry(dof_handler,
-                                                       mapping,
-                                                       top_id,
-                                                       {tool},
-                                                       search,
-                                                       false);
-    geometry.reinit(constraints);
+    auto  geometry_ptr = make_geometry(Common::Contact::RigidToolGap::mortar);
+    auto &geometry     = *geometry_ptr;
     lift_strip(0.5);
     geometry.update(u);
     const std::string shallow = geometry.inadmissible_state();
