@@ -313,6 +313,29 @@ main()
       deallog << "tangent of " << name
               << " against central differences < 1e-6: "
               << (tangent_error(*law, F_case, state, part) < 1e-6) << std::endl;
+
+    // The stress alone (no derivatives) is the stress of evaluate(), and
+    // so are the plastic flag and the updated state.
+    for (const auto &[name, law, F_case, state, part] : cases)
+      {
+        FiniteStrainResponse with_tangent, alone;
+        MaterialPointState   state_with_tangent, state_alone;
+        law->evaluate(F_case, state, part, with_tangent, &state_with_tangent);
+        law->evaluate_stress(F_case, state, part, alone, &state_alone);
+        const double scale = std::max(with_tangent.kirchhoff_stress.norm(), 1.);
+        deallog
+          << "stress alone of " << name << " = stress of evaluate() "
+          << "to 1e-13: "
+          << ((alone.kirchhoff_stress - with_tangent.kirchhoff_stress).norm() <=
+                1e-13 * scale &&
+              alone.plastic == with_tangent.plastic &&
+              std::abs(state_alone.equivalent_plastic_strain -
+                       state_with_tangent.equivalent_plastic_strain) <= 1e-15 &&
+              (state_alone.plastic_metric_inverse -
+               state_with_tangent.plastic_metric_inverse)
+                  .norm() <= 1e-13)
+          << std::endl;
+      }
   }
 
   // 4: objectivity under a superposed rigid rotation, step by step.

@@ -247,6 +247,23 @@ namespace Common
             }
       }
 
+      /** Evaluate stress(F, tau) of a law in plain numbers and store
+       * tau. */
+      template <typename StressFunction>
+      void
+      stress_value(const Tensor<2, 3>   &F,
+                   const StressFunction &stress,
+                   FiniteStrainResponse &response)
+      {
+        Matrix<double> F_m;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            F_m[3 * i + j] = F[i][j];
+        Matrix<double> tau;
+        stress(F_m.data(), tau.data());
+        response.kirchhoff_stress = symmetric_value(tau);
+      }
+
       std::string
       number(const double x)
       {
@@ -280,6 +297,41 @@ namespace Common
     FiniteStrainMaterial::has_history() const
     {
       return false;
+    }
+
+
+
+    void
+    FiniteStrainMaterial::evaluate_stress(
+      const Tensor<2, 3>       &F,
+      const MaterialPointState &state,
+      const StressPart          part,
+      FiniteStrainResponse     &response,
+      MaterialPointState       *updated_state) const
+    {
+      evaluate(F, state, part, response, updated_state);
+    }
+
+
+
+    template <class Law>
+    void
+    HyperelasticMaterial<Law>::evaluate_stress(
+      const Tensor<2, 3>       &F,
+      const MaterialPointState &state,
+      const StressPart          part,
+      FiniteStrainResponse     &response,
+      MaterialPointState       *updated_state) const
+    {
+      stress_value(
+        F,
+        [&](const double *F_m, double *tau) {
+          static_cast<const Law &>(*this).stress(F_m, part, tau);
+        },
+        response);
+      response.plastic = false;
+      if (updated_state != nullptr)
+        *updated_state = state;
     }
 
 
@@ -677,6 +729,25 @@ namespace Common
                                     transpose(F_inverse)));
           updated_state->equivalent_plastic_strain = ep + increment;
         }
+    }
+
+
+
+    void
+    J2Plasticity::evaluate_stress(const Tensor<2, 3>       &F,
+                                  const MaterialPointState &state,
+                                  const StressPart          part,
+                                  FiniteStrainResponse     &response,
+                                  MaterialPointState       *updated_state) const
+    {
+      bool plastic = false;
+      stress_value(
+        F,
+        [&](const double *F_m, double *tau) {
+          stress(F_m, state, part, tau, updated_state, plastic);
+        },
+        response);
+      response.plastic = plastic;
     }
 
 

@@ -563,6 +563,18 @@ namespace Common
           Materials::MaterialPointState *updated_pointer =
             output.states != nullptr || output.averages != nullptr ? &updated :
                                                                      nullptr;
+          // Without a matrix, the stress alone (no derivatives).
+          const auto evaluate_law = [&](const Tensor<2, 3>         &F_law,
+                                        const Materials::StressPart part) {
+            if (output.matrix != nullptr)
+              law.evaluate(F_law, states[q], part, response, updated_pointer);
+            else
+              law.evaluate_stress(F_law,
+                                  states[q],
+                                  part,
+                                  response,
+                                  updated_pointer);
+          };
           // The stress evaluated, its factor r in the virtual work and the
           // deformation it was evaluated at.
           double       r = 1., c = 1.;
@@ -577,19 +589,12 @@ namespace Common
               Tensor<2, 3> F_bar = c * F_active;
               if (plane_strain)
                 F_bar[2][2] = 1.;
-              law.evaluate(F_bar,
-                           states[q],
-                           Materials::StressPart::full,
-                           response,
-                           updated_pointer);
+              evaluate_law(F_bar, Materials::StressPart::full);
             }
           else
-            law.evaluate(F,
-                         states[q],
+            evaluate_law(F,
                          mixed ? Materials::StressPart::isochoric :
-                                 Materials::StressPart::full,
-                         response,
-                         updated_pointer);
+                                 Materials::StressPart::full);
 
           Tensor<2, 3> tau = response.kirchhoff_stress;
           double       p   = 0.;
@@ -670,38 +675,47 @@ namespace Common
     template <int dim>
     void
     FiniteStrainSolid<dim>::assemble(
-      const DoFHandler<dim>           &dof_handler,
-      const AffineConstraints<double> &constraints,
-      const VectorType                &u,
-      MatrixType                      *matrix,
-      VectorType                      &vector)
+      const DoFHandler<dim>                        &dof_handler,
+      const AffineConstraints<double>              &constraints,
+      const VectorType                             &u,
+      MatrixType                                   *matrix,
+      VectorType                                   &vector,
+      const typename SolidOperator<dim>::BulkTerms &bulk)
     {
       FullMatrix<double> K;
       Vector<double>     f;
-      for_owned_cells(dof_handler,
-                      u,
-                      [&](const auto &cell,
-                          const auto &u_cell,
-                          const auto &dof_indices,
-                          Scratch    &scratch) {
-                        CellOutput output;
-                        output.matrix = matrix != nullptr ? &K : nullptr;
-                        output.force  = &f;
-                        integrate_cell(cell, u_cell, scratch, output);
-                        if (matrix == nullptr)
-                          constraints.distribute_local_to_global(f,
-                                                                 dof_indices,
-                                                                 vector);
-                        else
-                          {
-                            f *= -1.;
-                            constraints.distribute_local_to_global(K,
-                                                                   f,
-                                                                   dof_indices,
-                                                                   *matrix,
-                                                                   vector);
-                          }
-                      });
+      const bool         tangent = matrix != nullptr || bulk.tangent != nullptr;
+      for_owned_cells(
+        dof_handler,
+        u,
+        [&](const auto &cell,
+            const auto &u_cell,
+            const auto &dof_indices,
+            Scratch    &scratch) {
+          CellOutput output;
+          output.matrix = tangent ? &K : nullptr;
+          output.force  = &f;
+          integrate_cell(cell, u_cell, scratch, output);
+          if (bulk.tangent != nullptr)
+            bulk.constraints->distribute_local_to_global(K,
+                                                         dof_indices,
+                                                         *bulk.tangent);
+          if (bulk.internal_force != nullptr)
+            bulk.constraints->distribute_local_to_global(f,
+                                                         dof_indices,
+                                                         *bulk.internal_force);
+          if (matrix == nullptr)
+            constraints.distribute_local_to_global(f, dof_indices, vector);
+          else
+            {
+              f *= -1.;
+              constraints.distribute_local_to_global(K,
+                                                     f,
+                                                     dof_indices,
+                                                     *matrix,
+                                                     vector);
+            }
+        });
     }
 
 
@@ -716,6 +730,21 @@ namespace Common
       VectorType                      &residual)
     {
       assemble(dof_handler, constraints, u, &matrix, residual);
+    }
+
+
+
+    template <int dim>
+    void
+    FiniteStrainSolid<dim>::assemble_system_and_bulk_terms(
+      const DoFHandler<dim>                        &dof_handler,
+      const AffineConstraints<double>              &constraints,
+      const VectorType                             &u,
+      MatrixType                                   &matrix,
+      VectorType                                   &residual,
+      const typename SolidOperator<dim>::BulkTerms &bulk)
+    {
+      assemble(dof_handler, constraints, u, &matrix, residual, bulk);
     }
 
 

@@ -20,6 +20,36 @@ namespace Common
 
     template <int dim>
     void
+    SolidOperator<dim>::assemble_system_and_bulk_terms(
+      const DoFHandler<dim>           &dof_handler,
+      const AffineConstraints<double> &constraints,
+      const VectorType                &u,
+      MatrixType                      &matrix,
+      VectorType                      &residual,
+      const BulkTerms                 &bulk)
+    {
+      assemble_system(dof_handler, constraints, u, matrix, residual);
+      if (bulk.tangent != nullptr)
+        {
+          VectorType unused(residual.locally_owned_elements(),
+                            residual.get_mpi_communicator());
+          assemble_system(dof_handler,
+                          *bulk.constraints,
+                          u,
+                          *bulk.tangent,
+                          unused);
+        }
+      if (bulk.internal_force != nullptr)
+        assemble_internal_force(dof_handler,
+                                *bulk.constraints,
+                                u,
+                                *bulk.internal_force);
+    }
+
+
+
+    template <int dim>
+    void
     SolidOperator<dim>::commit(const DoFHandler<dim> &, const VectorType &)
     {}
 

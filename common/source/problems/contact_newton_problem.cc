@@ -355,6 +355,15 @@ namespace Common
                                      solution,
                                      bulk_matrix,
                                      unused);
+      finish_bulk_matrix();
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::finish_bulk_matrix()
+    {
       if (stabilized)
         {
           FullMatrix<double> k(1, 1);
@@ -386,11 +395,12 @@ namespace Common
       const double              linear_tolerance)
     {
       const auto start = std::chrono::steady_clock::now();
-      if (contact_enforcement->has_friction())
-        {
-          assemble_bulk_matrix();
-          compute_bulk_residual(state, load);
-        }
+      // The bulk tangent (friction reads its rows) and the bulk residual
+      // (friction, and the linearised residual below) come from the same
+      // integration of the cells as the system.
+      const bool friction            = contact_enforcement->has_friction();
+      const bool needs_bulk_tangent  = friction && !bulk_matrix_current;
+      const bool needs_bulk_residual = friction || uses_linearized_tractions();
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
       constraints.merge(constraints_dirichlet_and_hanging_nodes);
@@ -416,11 +426,33 @@ namespace Common
 
       system_matrix = 0.;
       system_rhs    = 0.;
-      solid_operator.assemble_system(dof_handler,
-                                     constraints,
-                                     solution,
-                                     system_matrix,
-                                     system_rhs);
+      typename Physics::SolidOperator<dim>::BulkTerms bulk;
+      bulk.constraints = &constraints_dirichlet_and_hanging_nodes;
+      TrilinosWrappers::MPI::Vector internal_force, bulk_residual;
+      if (needs_bulk_tangent)
+        {
+          bulk_matrix  = 0.;
+          bulk.tangent = &bulk_matrix;
+        }
+      if (needs_bulk_residual)
+        {
+          internal_force.reinit(locally_owned_dofs, mpi_communicator);
+          bulk.internal_force = &internal_force;
+        }
+      solid_operator.assemble_system_and_bulk_terms(dof_handler,
+                                                    constraints,
+                                                    solution,
+                                                    system_matrix,
+                                                    system_rhs,
+                                                    bulk);
+      if (needs_bulk_tangent)
+        finish_bulk_matrix();
+      if (needs_bulk_residual)
+        {
+          bulk_residual =
+            bulk_residual_from(internal_force, solution, state, load);
+          residual_vector = bulk_residual;
+        }
       load.add(state, constraints, system_rhs);
       if (stabilized)
         {
@@ -484,9 +516,8 @@ namespace Common
           const auto   residual_start = std::chrono::steady_clock::now();
           const double epsilon =
             1e-8 * std::max(solution_owned.linfty_norm(), 1e-3) / update_size;
-          const TrilinosWrappers::MPI::Vector r_now =
-            bulk_residual_at(solution, state, load);
-          TrilinosWrappers::MPI::Vector probe = solution_owned;
+          const TrilinosWrappers::MPI::Vector &r_now = bulk_residual;
+          TrilinosWrappers::MPI::Vector        probe = solution_owned;
           probe.add(epsilon, newton_update);
           TrilinosWrappers::MPI::Vector probe_ghosted(solution);
           probe_ghosted = probe;
@@ -588,12 +619,26 @@ namespace Common
       // f_ext - f_int condensed as the linear system is: hanging-node
       // forces on their parents (a secondary node may be one), Dirichlet
       // rows zero (support reactions are no contact tractions).
-      TrilinosWrappers::MPI::Vector r(locally_owned_dofs, mpi_communicator);
+      TrilinosWrappers::MPI::Vector f(locally_owned_dofs, mpi_communicator);
       solid_operator.assemble_internal_force(
         dof_handler,
         constraints_dirichlet_and_hanging_nodes,
         u,
-        r);
+        f);
+      return bulk_residual_from(f, u, state, load);
+    }
+
+
+
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    ContactNewtonProblem<dim>::bulk_residual_from(
+      TrilinosWrappers::MPI::Vector       &internal_force,
+      const TrilinosWrappers::MPI::Vector &u,
+      const Solvers::LoadState            &state,
+      const ExternalLoad                  &load)
+    {
+      TrilinosWrappers::MPI::Vector &r = internal_force;
       r.compress(VectorOperation::add);
       r *= -1.;
       load.add(state, constraints_dirichlet_and_hanging_nodes, r);

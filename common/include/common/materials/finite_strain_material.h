@@ -94,6 +94,19 @@ namespace Common
                FiniteStrainResponse       &response,
                MaterialPointState         *updated_state = nullptr) const = 0;
 
+      /**
+       * @brief The Kirchhoff stress alone at @p F: response.kirchhoff_stress
+       * and response.plastic as evaluate() sets them, the tangent left as
+       * it is. A law that evaluates its stress in plain numbers does so
+       * here, without the derivatives; the default calls evaluate().
+       */
+      virtual void
+      evaluate_stress(const dealii::Tensor<2, 3> &F,
+                      const MaterialPointState   &state,
+                      const StressPart            part,
+                      FiniteStrainResponse       &response,
+                      MaterialPointState         *updated_state) const;
+
       /** @brief True if the stress is the sum of an isochoric part and
        * a pressure \f$U'(J)\f$ from a volumetric energy \f$U(J)\f$. */
       virtual bool
@@ -187,6 +200,13 @@ namespace Common
                const StressPart            part,
                FiniteStrainResponse       &response,
                MaterialPointState *updated_state = nullptr) const override;
+
+      void
+      evaluate_stress(const dealii::Tensor<2, 3> &F,
+                      const MaterialPointState   &state,
+                      const StressPart            part,
+                      FiniteStrainResponse       &response,
+                      MaterialPointState         *updated_state) const override;
     };
 
     /**
@@ -319,6 +339,13 @@ namespace Common
                const StressPart            part,
                FiniteStrainResponse       &response,
                MaterialPointState *updated_state = nullptr) const override;
+
+      void
+      evaluate_stress(const dealii::Tensor<2, 3> &F,
+                      const MaterialPointState   &state,
+                      const StressPart            part,
+                      FiniteStrainResponse       &response,
+                      MaterialPointState         *updated_state) const override;
 
       bool
       has_volumetric_split() const override;

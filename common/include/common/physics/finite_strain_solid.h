@@ -159,6 +159,17 @@ namespace Common
                       MatrixType                              &matrix,
                       VectorType &residual) override;
 
+      /** @brief assemble_system() and the terms @p bulk asks for, from one
+       * integration of each cell; not compressed. */
+      void
+      assemble_system_and_bulk_terms(
+        const dealii::DoFHandler<dim>                &dof_handler,
+        const dealii::AffineConstraints<double>      &constraints,
+        const VectorType                             &u,
+        MatrixType                                   &matrix,
+        VectorType                                   &residual,
+        const typename SolidOperator<dim>::BulkTerms &bulk) override;
+
       /** @brief Internal forces \f$f_{int}(u)\f$ (N) on locally owned
        * cells, condensed with @p constraints; not compressed. */
       void
@@ -313,13 +324,15 @@ namespace Common
         CellOutput &output) const;
 
       /** Internal forces into @p vector (no @p matrix), or the tangent and
-       * the residual -f_int (with @p matrix), condensed. */
+       * the residual -f_int (with @p matrix), condensed; and the terms
+       * @p bulk asks for from the same cell integrals. */
       void
-      assemble(const dealii::DoFHandler<dim>           &dof_handler,
-               const dealii::AffineConstraints<double> &constraints,
-               const VectorType                        &u,
-               MatrixType                              *matrix,
-               VectorType                              &vector);
+      assemble(const dealii::DoFHandler<dim>                &dof_handler,
+               const dealii::AffineConstraints<double>      &constraints,
+               const VectorType                             &u,
+               MatrixType                                   *matrix,
+               VectorType                                   &vector,
+               const typename SolidOperator<dim>::BulkTerms &bulk = {});
 
       /** Run @p work(cell, u_cell, dof_indices, scratch) on every locally
        * owned cell. */

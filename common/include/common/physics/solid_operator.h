@@ -87,6 +87,37 @@ namespace Common
                       VectorType                              &residual) = 0;
 
       /**
+       * @brief The bulk terms a contact law reads beside the system: the
+       * tangent and the internal force of the same cell integrals,
+       * condensed with another constraint object than the system's.
+       */
+      struct BulkTerms
+      {
+        /** The constraints both terms are condensed with. */
+        const dealii::AffineConstraints<double> *constraints = nullptr;
+        /** The tangent \f$K\f$, or nullptr if not wanted. */
+        MatrixType *tangent = nullptr;
+        /** The internal force \f$f_{int}(u)\f$ (N), or nullptr if not
+         * wanted. */
+        VectorType *internal_force = nullptr;
+      };
+
+      /**
+       * @brief assemble_system(), and in the same pass over the cells the
+       * terms @p bulk asks for: each cell's integrals are computed once.
+       * The default calls assemble_system() and assemble_internal_force()
+       * as often as needed.
+       */
+      virtual void
+      assemble_system_and_bulk_terms(
+        const dealii::DoFHandler<dim>           &dof_handler,
+        const dealii::AffineConstraints<double> &constraints,
+        const VectorType                        &u,
+        MatrixType                              &matrix,
+        VectorType                              &residual,
+        const BulkTerms                         &bulk);
+
+      /**
        * @brief Internal force vector \f$f_{int}(u)\f$ (N) on locally owned
        * cells, condensed with @p constraints exactly as the residual of
        * assemble_system() (hanging-node forces moved to their parents,

@@ -344,6 +344,16 @@ namespace Common
                        const Solvers::LoadState                    &state,
                        const ExternalLoad                          &load);
 
+      /** f_ext - f_int from the internal force @p internal_force at @p u
+       * (assembled, not compressed; it is overwritten): the springs of a
+       * stabilized solve included, condensed as in compute_bulk_residual();
+       * a compressed owned vector. */
+      dealii::TrilinosWrappers::MPI::Vector
+      bulk_residual_from(dealii::TrilinosWrappers::MPI::Vector &internal_force,
+                         const dealii::TrilinosWrappers::MPI::Vector &u,
+                         const Solvers::LoadState                    &state,
+                         const ExternalLoad                          &load);
+
       /** f_ext - f_int at the current state, condensed with the Dirichlet
        * and hanging-node constraints (N): stored, ghosted, in
        * residual_vector and returned as a compressed owned vector. */
@@ -357,6 +367,11 @@ namespace Common
        * otherwise. */
       void
       assemble_bulk_matrix();
+
+      /** The stabilization springs added to bulk_matrix, which is then
+       * compressed and marked current if it stays so. */
+      void
+      finish_bulk_matrix();
 
       const dealii::DoFHandler<dim>           &dof_handler;
       const dealii::Mapping<dim>              &mapping;
