@@ -172,7 +172,16 @@ namespace ReynoldsRoller
              "end of the stage, seen from +z with x to the right and y up "
              "(the benchmark: 0 while pressing, then 360); the strip "
              "travels about R theta, which must leave the roller on it. "
-             "Units: degrees."}};
+             "Units: degrees."},
+            {"Bottom x release",
+             "Fraction of the horizontal reaction of the bottom's support "
+             "that is released at the end of the stage. When the support is "
+             "freed ('Supports/Bottom free in x from stage'), its reaction "
+             "is applied to the bottom's nodes as a force times one less "
+             "this fraction: 1 releases it at once; 0 at the end of the "
+             "last held stage and 1 at the end of the next releases it "
+             "gradually over that stage. No effect while the support holds "
+             "or if it never held. Dimensionless, from 0 to 1."}};
   }
 
 
@@ -189,7 +198,7 @@ namespace ReynoldsRoller
     Common::Problems::ContactRunParameters::declare_parameters(
       prm,
       load_channels(),
-      {{"Indentation", 3.}, {"Roller angle", 0.}});
+      {{"Indentation", 3.}, {"Roller angle", 0.}, {"Bottom x release", 1.}});
   }
 
 
@@ -233,6 +242,14 @@ namespace ReynoldsRoller
              << " mm of strip beyond the roller's contact zone, got " << angle
              << ".";
         AssertThrow(travel <= room, ExcMessage(turn.str()));
+        const double fraction =
+          load_program.stages[s].end_values.at("Bottom x release");
+        std::ostringstream release;
+        release << "Load program/Stage " << s + 1
+                << ": 'Bottom x release' must lie in [0, 1], got " << fraction
+                << ".";
+        AssertThrow(fraction >= 0. && fraction <= 1.,
+                    ExcMessage(release.str()));
       }
     rubber_material.parse_parameters(prm,
                                      "Rubber material",

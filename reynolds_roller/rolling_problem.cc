@@ -201,9 +201,14 @@ namespace ReynoldsRoller
   RollingProblem::external_load() const
   {
     Common::Problems::ExternalLoad load;
-    load.add = [](const Common::Solvers::LoadState &,
-                  const AffineConstraints<double> &,
-                  TrilinosWrappers::MPI::Vector &) {
+    // Once the bottom is free in x: the support's reaction there, less
+    // the fraction the channel 'Bottom x release' has released.
+    load.add = [this](const Common::Solvers::LoadState &state,
+                      const AffineConstraints<double> &,
+                      TrilinosWrappers::MPI::Vector &rhs) {
+      const double factor = 1. - state.value("Bottom x release");
+      for (const auto &[dof, reaction] : released_reactions)
+        rhs(dof) += factor * reaction;
     };
     const double scale = 0.1 * parameters.rubber_material.youngs_modulus *
                          parameters.geometry.roller_radius;
@@ -243,10 +248,17 @@ namespace ReynoldsRoller
     record.angle         = step.state.value("Roller angle");
     record.roller_force  = loads[0].force;
     record.roller_moment = loads[0].moment[2];
+    // The whole force of the bottom on the strip: its supports' reactions
+    // and the support force being released (the internal forces there).
+    Common::Problems::ExternalLoad internal_only = external_load();
+    internal_only.add = [](const Common::Solvers::LoadState &,
+                           const AffineConstraints<double> &,
+                           TrilinosWrappers::MPI::Vector &) {
+    };
     record.bottom_reaction =
       contact_problem->reaction_forces({BoundaryIds::bottom},
                                        step.state,
-                                       external_load())[0];
+                                       internal_only)[0];
     const double magnitude = record.roller_force.norm();
     record.balance =
       magnitude > 0. ?
@@ -275,10 +287,17 @@ namespace ReynoldsRoller
     if (bottom_held && free_stage > 1 &&
         std::abs(step.state.time - (free_stage - 1.)) < 1e-9)
       {
+        const TrilinosWrappers::MPI::Vector reactions =
+          contact_problem->nodal_reactions(step.state, internal_only);
+        for (const auto dof : bottom_x_dofs)
+          if (reactions.locally_owned_elements().is_element(dof))
+            released_reactions[dof] = reactions(dof);
         contact_problem->release_dofs(bottom_x_dofs);
         bottom_held = false;
-        console.stream() << "  The strip's bottom is free in x from here."
-                         << std::endl;
+        console.stream()
+          << "  The strip's bottom is free in x from here; its support's "
+             "reaction is applied less the fraction 'Bottom x release'."
+          << std::endl;
       }
     Common::Problems::warn_if_search_edge_reached(console, *contact_problem);
   }

@@ -17,6 +17,7 @@
 #include "parameters.h"
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,11 @@ namespace ReynoldsRoller
      * DoFs (held before the stage that frees them). */
     std::vector<types::global_dof_index> bottom_y_dofs, bottom_x_dofs;
     bool                                 bottom_held = false;
+    /** The horizontal reaction of the bottom's support at each owned DoF
+     * of bottom_x_dofs when it was freed (N per mm); applied to them as a
+     * force times one less the channel 'Bottom x release'. Empty until
+     * then. */
+    std::map<types::global_dof_index, double> released_reactions;
     /** The state at every accepted step. */
     std::vector<StepRecord> records;
   };

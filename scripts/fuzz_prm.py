@@ -220,14 +220,16 @@ APPS = {
     },
     "reynolds_roller": {
         "production": "reynolds_roller/reynolds_roller_mu03.prm",
-        # Pressing 1 mm in 2 steps and 2 degrees of the turn in 1 step on
-        # 30 x 2 cells.
+        # Pressing 1 mm in 2 steps, the bottom's release in 1 step and 2
+        # degrees of the turn in 1 step on 30 x 2 cells.
         "coarse": [("Mesh", "Number of cells along the length", "30"),
                    ("Mesh", "Number of cells through the thickness", "2"),
                    ("Load program/Stage 1", "Number of steps", "2"),
                    ("Load program/Stage 1", "Indentation", "1"),
                    ("Load program/Stage 2", "Number of steps", "1"),
-                   ("Load program/Stage 2", "Roller angle", "2")],
+                   ("Load program/Stage 2", "Indentation", "1"),
+                   ("Load program/Stage 3", "Number of steps", "1"),
+                   ("Load program/Stage 3", "Roller angle", "2")],
         "huge": [
             [("Mesh", "Number of cells along the length", "1000000")],
             [("Mesh", "Number of cells through the thickness", "1000000")],

@@ -227,26 +227,34 @@ VARIATIONS = {
              "is one channel program, varied by its number of steps")],
     },
     "reynolds_roller": {
-        # The fuzz harness's coarse case: 30 x 2 cells pressed 1 mm, then 2
-        # degrees of the turn. Without friction nothing holds the strip in
+        # The fuzz harness's coarse case: 30 x 2 cells pressed 1 mm (the
+        # bottom held in x), its support released, then 2 degrees of the
+        # turn. Without friction nothing holds the strip in
         # x but its bottom.
         "runs": [("coarse case", [])]
         + [(f"mu {mu:g}", friction(mu) + ([("Supports", "Bottom free in x from stage", "0")]
                                           if mu == 0 else []))
            for mu in MUS]
-        + [(f"{n} rolling steps", [("Load program/Stage 2", "Number of steps", str(n))])
+        + [(f"{n} rolling steps", [("Load program/Stage 3", "Number of steps", str(n))])
            for n in STEPS]
         + [("first step 1e-6 of the indentation",
-            [("Load program", "Number of stages", "3"),
+            [("Load program", "Number of stages", "4"),
+             ("Supports", "Bottom free in x from stage", "3"),
              ("Load program/Stage 1", "Number of steps", "1"),
              ("Load program/Stage 1", "Indentation", "1e-06"),
              ("Load program/Stage 2", "Name", "pressing"),
              ("Load program/Stage 2", "Number of steps", "2"),
              ("Load program/Stage 2", "Indentation", "1"),
              ("Load program/Stage 2", "Roller angle", "0"),
-             ("Load program/Stage 3", "Name", "rolling"),
+             ("Load program/Stage 2", "Bottom x release", "0"),
+             ("Load program/Stage 3", "Name", "release"),
              ("Load program/Stage 3", "Number of steps", "1"),
-             ("Load program/Stage 3", "Roller angle", "2")])]
+             ("Load program/Stage 3", "Indentation", "1"),
+             ("Load program/Stage 3", "Roller angle", "0"),
+             ("Load program/Stage 3", "Bottom x release", "1"),
+             ("Load program/Stage 4", "Name", "rolling"),
+             ("Load program/Stage 4", "Number of steps", "1"),
+             ("Load program/Stage 4", "Roller angle", "2")])]
         + [(f"Q{p}", degree(p)) for p in (1, 2)]
         + [(f"penalty {k:g} MPa/mm, mu 0",
             penalty(k) + friction(0) + [("Supports", "Bottom free in x from stage", "0")])

@@ -39,6 +39,9 @@ subsection Load program
     set Number of steps = 5
   end
   subsection Stage 2
+    set Number of steps = 1
+  end
+  subsection Stage 3
     set Number of steps = 4
     set Roller angle    = 90
   end

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Requirement: benchmark 5 with friction (mu = 0.3, exactly incompressible
-# rubber, Q2-P1) on a coarse mesh (60 x 3 cells): pressing 3 mm in 5 steps,
-# then 20 degrees of the turn in 5 steps, with the cutbacks the Newton
+# rubber, Q2-P1) on a coarse mesh (60 x 3 cells): pressing 3 mm in 5 steps
+# (the bottom held in x), the release of that support in 2 steps, then 20
+# degrees of the turn in 5 steps, with the cutbacks the Newton
 # method needs but no failed step. Checks at every turned step: the strip's
 # force balance (the roller's force against the bottom's reaction) to
 # 1e-8; the horizontal force on the roller vanishes to 1e-8 of the
@@ -29,6 +30,9 @@ subsection Load program
     set Number of steps = 5
   end
   subsection Stage 2
+    set Number of steps = 2
+  end
+  subsection Stage 3
     set Number of steps = 5
     set Roller angle    = 20
   end

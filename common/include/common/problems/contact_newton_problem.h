@@ -220,6 +220,15 @@ namespace Common
                      const Solvers::LoadState                           &state,
                      const ExternalLoad                                 &load);
 
+      /**
+       * @brief Internal forces minus the external load at @p state at every
+       * owned DoF, without constraints (N; per mm of thickness in plane
+       * strain): at a support, its reaction on the body. Collective.
+       */
+      dealii::TrilinosWrappers::MPI::Vector
+      nodal_reactions(const Solvers::LoadState &state,
+                      const ExternalLoad       &load);
+
       /** @brief Displacement (mm): readable at the DoFs of the rank's own
        * cells and of the contact pair. */
       const dealii::TrilinosWrappers::MPI::Vector &
@@ -268,12 +277,6 @@ namespace Common
        * in the current configuration. */
       bool
       is_nonlinear() const;
-
-      /** Internal forces minus the external load at @p state at every
-       * owned DoF, without constraints (N). Collective. */
-      dealii::TrilinosWrappers::MPI::Vector
-      nodal_reactions(const Solvers::LoadState &state,
-                      const ExternalLoad       &load);
 
       /** The springs of stabilized solves: their stiffness, once. */
       void
