@@ -7,6 +7,7 @@
 #include <common/geometry/two_body_meshes.h>
 #include <common/physics/boundary_conditions.h>
 #include <common/physics/boundary_displacement.h>
+#include <common/physics/finite_strain_solid.h>
 #include <common/physics/solid_model.h>
 #include <common/problems/contact_run.h>
 
@@ -41,7 +42,14 @@ namespace ReynoldsRoller
             "creep.png",
             "creep.gp",
             "roller_loads.png",
-            "roller_loads.gp"};
+            "roller_loads.gp",
+            "corners.png",
+            "corners.gp",
+            "contact_half_turn.csv",
+            "contact_half_turn_tractions.png",
+            "contact_half_turn_tractions.gp",
+            "contact_half_turn_slip.png",
+            "contact_half_turn_slip.gp"};
   }
 
 
@@ -264,6 +272,14 @@ namespace ReynoldsRoller
       magnitude > 0. ?
         (record.roller_force - record.bottom_reaction).norm() / magnitude :
         0.;
+    auto *finite_strain =
+      dynamic_cast<Common::Physics::FiniteStrainSolid<dim> *>(solid.get());
+    record.dilatation_error =
+      finite_strain != nullptr ?
+        finite_strain->dilatation_error(dof_handler,
+                                        contact_problem->displacement(),
+                                        false) :
+        0.;
     const auto points = corners();
     for (unsigned int c = 0; c < n_corners; ++c)
       record.corner_ux[c] =
@@ -273,6 +289,11 @@ namespace ReynoldsRoller
                                          points[c],
                                          "a corner of the strip")[0];
     records.push_back(record);
+    if (!half_turn_written && record.angle >= 180. - 1e-9)
+      {
+        write_half_turn_profile(record.angle);
+        half_turn_written = true;
+      }
 
     console.print_quantity("Roller angle (clockwise)", "deg", record.angle);
     console.print_quantity("Point A, u_x", "mm", record.corner_ux[0]);

@@ -65,6 +65,9 @@ namespace ReynoldsRoller
     /** |roller force - bottom reaction| over |roller force|: the strip's
      * balance (the roller's force is the strip's contact force reversed). */
     double balance;
+    /** Largest |J - 1| of the projected dilatation over the exactly
+     * incompressible cells (0 if the rubber is compressible). */
+    double dilatation_error;
   };
 
   /**
@@ -104,6 +107,11 @@ namespace ReynoldsRoller
     Common::Contact::RigidTool<dim>
     make_roller() const;
 
+    /** Write contact_half_turn.csv and its plots: the contact zone at the
+     * accepted step at @p angle (the first at or past half a turn). */
+    void
+    write_half_turn_profile(const double angle);
+
     /** The strip's corners in the reference configuration, A first. */
     std::array<Point<dim>, n_corners>
     corners() const;
@@ -121,6 +129,8 @@ namespace ReynoldsRoller
     std::map<types::global_dof_index, double> released_reactions;
     /** The state at every accepted step. */
     std::vector<StepRecord> records;
+    /** True once the contact zone of half a turn is written. */
+    bool half_turn_written = false;
   };
 } // namespace ReynoldsRoller
 

@@ -2,7 +2,9 @@
  * Benchmark 5 results: the history of point A and of the roller's loads,
  * the creep ratio, and summary.json with the published DX(A) beside ours.
  */
+#include <common/contact/contact_postprocessor.h>
 #include <common/io/json_writer.h>
+#include <common/physics/boundary_displacement.h>
 #include <common/problems/contact_run.h>
 
 #include "rolling_problem.h"
@@ -13,7 +15,9 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <numeric>
+#include <sstream>
 
 namespace ReynoldsRoller
 {
@@ -34,6 +38,98 @@ namespace ReynoldsRoller
 
 
   void
+  RollingProblem::write_half_turn_profile(const double angle)
+  {
+    const auto &out = parameters.output;
+    const auto  profile =
+      Common::Contact::contact_profile(contact_problem->coupling(),
+                                       contact_problem->enforcement(),
+                                       contact_problem->displacement(),
+                                       contact_problem->bulk_residual(),
+                                       0);
+    // The zone and a roller radius on either side of it, by the closed
+    // nodes' reference positions.
+    double first = std::numeric_limits<double>::infinity(), last = -first;
+    for (const auto &p : profile)
+      if (p.status != "open")
+        {
+          first = std::min(first, p.position[0]);
+          last  = std::max(last, p.position[0]);
+        }
+    if (!std::isfinite(first))
+      return;
+    const double R  = parameters.geometry.roller_radius;
+    const double mu = parameters.contact.friction_coefficient;
+    std::vector<std::array<double, 7>> rows;
+    for (const auto &p : profile)
+      if (p.position[0] >= first - R && p.position[0] <= last + R)
+        {
+          // The current position: collective over the ranks.
+          const double x =
+            p.position[0] +
+            Common::Physics::displacement_at(mapping,
+                                             dof_handler,
+                                             contact_problem->displacement(),
+                                             p.position,
+                                             "a node of the strip's top")[0];
+          rows.push_back({{x,
+                           p.position[0],
+                           p.pressure,
+                           p.tangential_traction,
+                           mu * p.pressure,
+                           p.slip,
+                           p.status == "open"  ? 0. :
+                           p.status == "stick" ? 1. :
+                                                 2.}});
+        }
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    {
+      std::ofstream csv(out.path("contact_half_turn.csv"));
+      csv << "x_mm,x_reference_mm,pressure_MPa,tangential_traction_MPa,"
+             "mu_pressure_MPa,slip_mm,status\n"
+          << std::setprecision(10);
+      for (const auto &r : rows)
+        {
+          for (unsigned int c = 0; c < r.size(); ++c)
+            csv << (c > 0 ? "," : "") << r[c];
+          csv << '\n';
+        }
+    }
+    if (!out.write_plots)
+      return;
+    std::ostringstream at;
+    at << "roller angle " << angle << " deg";
+    Common::IO::PlotDescription tractions;
+    tractions.title = "Contact tractions on the strip's top, " + at.str() +
+                      " (stick where |q| < mu p)";
+    tractions.x_label = "x, current [mm]";
+    tractions.y_label = "traction [MPa]";
+    tractions.series  = {
+       {"contact_half_turn.csv", 1, 3, "pressure p", "linespoints pt 7 ps 0.5"},
+       {"contact_half_turn.csv",
+        1,
+        4,
+        "tangential traction q",
+        "linespoints pt 5 ps 0.5"},
+       {"contact_half_turn.csv", 1, 5, "mu p (slip bound)", "lines dt 2"}};
+    Common::IO::PlotDescription status;
+    status.title   = "Contact status and slip, " + at.str();
+    status.x_label = "x, current [mm]";
+    status.y_label = "status (0 open, 1 stick, 2 slip); slip [mm]";
+    status.series  = {{"contact_half_turn.csv", 1, 7, "status", "steps lw 2"},
+                      {"contact_half_turn.csv",
+                       1,
+                       6,
+                       "slip accumulated in contact",
+                       "linespoints pt 7 ps 0.4"}};
+    write_plots({{"contact_half_turn_tractions", tractions},
+                 {"contact_half_turn_slip", status}});
+  }
+
+
+
+  void
   RollingProblem::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
@@ -43,10 +139,12 @@ namespace ReynoldsRoller
     AssertThrow(!records.empty(), ExcMessage("No accepted step."));
     const StepRecord &last = records.back();
 
-    double worst_balance = 0., pressed_force = 0., pressed_ux = 0.;
+    double worst_balance = 0., pressed_force = 0., pressed_ux = 0.,
+           worst_dilatation = 0.;
     for (const auto &r : records)
       {
-        worst_balance = std::max(worst_balance, r.balance);
+        worst_balance    = std::max(worst_balance, r.balance);
+        worst_dilatation = std::max(worst_dilatation, r.dilatation_error);
         if (r.angle == 0.)
           {
             pressed_force = r.roller_force[1];
@@ -115,7 +213,8 @@ namespace ReynoldsRoller
                "ux_bottom_left_mm,ux_top_right_mm,ux_bottom_right_mm,"
                "creep_ratio,roller_force_x_N_per_mm,"
                "roller_force_y_N_per_mm,driving_torque_N,"
-               "balance_relative_error,rolling_creep_ratio\n"
+               "balance_relative_error,rolling_creep_ratio,"
+               "dilatation_error\n"
             << std::setprecision(10);
         for (const auto &r : records)
           {
@@ -124,7 +223,8 @@ namespace ReynoldsRoller
               csv << ',' << u;
             csv << ',' << creep(r, 0.) << ',' << r.roller_force[0] << ','
                 << r.roller_force[1] << ',' << r.roller_moment << ','
-                << r.balance << ',' << creep(r, pressed_ux) << '\n';
+                << r.balance << ',' << creep(r, pressed_ux) << ','
+                << r.dilatation_error << '\n';
           }
       }
     if (root && out.write_plots)
@@ -151,7 +251,14 @@ namespace ReynoldsRoller
            {"history.csv", 3, 10, "force, y", "lines lw 2"},
            {"history.csv", 3, 9, "force, x", "lines lw 2"},
            {"history.csv", 3, 11, "driving torque", "lines lw 2 dt 2"}};
-        write_plots({{"creep", ratio}, {"roller_loads", loads}});
+        Common::IO::PlotDescription dx;
+        dx.title   = "x displacement of the strip's corners";
+        dx.x_label = "roller angle [deg]";
+        dx.y_label = "u_x [mm]";
+        dx.series  = {{"history.csv", 3, 4, "A (top left)", "lines lw 2"},
+                      {"history.csv", 3, 6, "top right", "lines lw 2 dt 2"}};
+        write_plots(
+          {{"creep", ratio}, {"roller_loads", loads}, {"corners", dx}});
       }
 
     console.stream() << "\nResults" << std::endl;
@@ -173,6 +280,7 @@ namespace ReynoldsRoller
         window_spread);
     console.print_quantity("Vertical force, pressed", "N/mm", pressed_force);
     console.print_quantity("Largest force balance error", "", worst_balance);
+    console.print_quantity("Largest |J - 1|", "", worst_dilatation);
 
     using Common::IO::JsonObject;
     JsonObject case_description =
@@ -203,7 +311,8 @@ namespace ReynoldsRoller
       .set("vertical_force_pressed_N_per_mm", pressed_force)
       .set("mean_vertical_force_turning_N_per_mm", mean_force)
       .set("mean_driving_torque_turning_N", mean_torque)
-      .set("max_force_balance_relative_error", worst_balance);
+      .set("max_force_balance_relative_error", worst_balance)
+      .set("max_dilatation_error", worst_dilatation);
 
     if (!window_ratios.empty())
       {

@@ -46,6 +46,9 @@ run_case() { # app, production .prm, [case name, override lines]
         if [ "$app" = sheet_forming ]; then
           echo "  set Number of cells through the thickness = 2"
           echo "  set Number of cells along the length      = 30"
+        elif [ "$app" = reynolds_roller ]; then
+          echo "  set Number of cells through the thickness = 3"
+          echo "  set Number of cells along the length      = 60"
         else
           echo "  set Number of contact refinements = $level"
         fi
@@ -74,9 +77,11 @@ for app in cgs_roller punch3d loaded_pin; do
     run_case "$app" "$prm"
   done
 done
-# Benchmark 3 with friction; without friction it does not yet run to the
-# end (sheet_forming/README.md, "Status").
-run_case sheet_forming parameters/sheet_forming/sheet_forming_mu01342.prm
+for app in sheet_forming reynolds_roller; do
+  for prm in parameters/$app/*.prm; do
+    run_case "$app" "$prm"
+  done
+done
 # Benchmark 1 with friction at 1/100 of the load, the half-space limit in
 # which Spence's solution and the exact-coupling solution hold: the
 # production file with the load, the contact strip and the search distance

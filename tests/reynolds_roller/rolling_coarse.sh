@@ -5,7 +5,9 @@
 # degrees of the turn in 5 steps, with the cutbacks the Newton
 # method needs but no failed step. Checks at every turned step: the strip's
 # force balance (the roller's force against the bottom's reaction) to
-# 1e-8; the horizontal force on the roller vanishes to 1e-8 of the
+# 1e-8; the projected dilatation J of the exactly incompressible rubber
+# stays within 1e-6 of 1 (the augmentation's tolerance is 1e-8); the
+# horizontal force on the roller vanishes to 1e-8 of the
 # vertical one (the strip is free in x, so the friction forces balance
 # among themselves); point A moves against x, by less than the roller's
 # surface travel R theta and by more than 0.85 of it, counted from the
@@ -46,12 +48,14 @@ import csv, sys
 rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(sys.argv[1]))]
 turned = [r for r in rows if r["roller_angle_deg"] > 0.]
 balance = max(r["balance_relative_error"] for r in rows)
+dilatation = max(r["dilatation_error"] for r in rows)
 horizontal = max(abs(r["roller_force_x_N_per_mm"] / r["roller_force_y_N_per_mm"])
                  for r in turned)
 creep = [r["rolling_creep_ratio"] for r in turned]
 checks = [
     ("turned 20 degrees", turned[-1]["roller_angle_deg"] == 20.),
     (f"force balance {balance:.1e} <= 1e-8 at every step", balance <= 1e-8),
+    (f"|J - 1| {dilatation:.1e} <= 1e-6 at every step", dilatation <= 1e-6),
     (f"horizontal force {horizontal:.1e} of the vertical <= 1e-8", horizontal <= 1e-8),
     (f"creep ratio while turning in (0.85, 1): {min(creep):.4f} to {max(creep):.4f}",
      all(0.85 < c < 1. for c in creep)),
