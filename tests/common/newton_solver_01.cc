@@ -8,7 +8,8 @@
  * increment) as a convergence sign; it does not converge on a small step
  * while the active set changes or the complementarity residual is large,
  * nor when the step stays above its tolerance or the test is disabled; it
- * stops on a non-finite residual and on a cycling active set, unless the
+ * stops on a non-finite residual, on a residual above the divergence bound
+ * (and only there), and on a cycling active set, unless the
  * problem offers the one-change-per-equilibrium mode: then the cycling set
  * is held until equilibrium, and each later update changes one point from
  * an equilibrium until none changes, or until an equilibrium returns to
@@ -52,13 +53,15 @@ namespace
       const double                  step_tolerance,
       const unsigned int            cycling_from      = 0,
       const double                  factor            = 0.,
-      std::vector<double>          *linear_tolerances = nullptr)
+      std::vector<double>          *linear_tolerances = nullptr,
+      const double                  divergence_bound  = 0.)
   {
     NonlinearSolverParameters parameters;
     parameters.max_iterations          = 8;
     parameters.tolerance               = 1e-10;
     parameters.step_tolerance          = step_tolerance;
     parameters.linear_tolerance_factor = factor;
+    parameters.divergence_bound        = divergence_bound;
 
     unsigned int    k = 0;
     NewtonCallbacks callbacks;
@@ -195,6 +198,25 @@ main()
              0.));
   // A non-finite residual stops at once, even with a tiny step.
   report("non-finite", run({{1., 1e-3, 1e-1, 3}, {1e-12, nan, 0, 0}}, 1e-8));
+  // A residual above the divergence bound (1e3) stops at once; up to it
+  // the iteration goes on and converges; without a bound the diverging
+  // history runs out of iterations.
+  report("above the divergence bound",
+         run({{1., 5., 1e-1, 3}, {0.5, 2e3, 1e-1, 2}, {1e-5, 1e-13, 0, 0}},
+             1e-8,
+             0,
+             0.,
+             nullptr,
+             1e3));
+  report("at the divergence bound",
+         run({{1., 5., 1e-1, 3}, {0.5, 1e3, 1e-1, 2}, {1e-5, 1e-13, 0, 0}},
+             1e-8,
+             0,
+             0.,
+             nullptr,
+             1e3));
+  report("diverging, no bound",
+         run({{1., 5., 1e-1, 3}, {0.5, 2e3, 1e-1, 2}, {1., 1e6, 0, 1}}, 1e-8));
   // A cycling active set stops the loop.
   report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, 1));
   // With the one-change-per-equilibrium mode a cycle holds the set: no

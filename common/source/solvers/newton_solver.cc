@@ -84,6 +84,18 @@ namespace Common
           "fails, the step is cut back. "
           "0: off, a failed step is cut back at once. Dimensionless.");
         prm.declare_entry(
+          "Divergence bound",
+          "0",
+          Patterns::Double(0.),
+          "An iterate whose equilibrium residual, relative to the external "
+          "load, exceeds this bound fails the step at once (it is cut back, "
+          "or solved again with the stabilization springs), instead of "
+          "iterating on from a state far from any equilibrium (a sheet "
+          "thrown off its tools) until a value turns non-finite or the "
+          "iterations run out. Set it well above the largest residual of a "
+          "converging step (a few tens in forming). 0: no bound. "
+          "Dimensionless.");
+        prm.declare_entry(
           "Step test residual bound",
           "1e-6",
           Patterns::Double(0.),
@@ -114,6 +126,7 @@ namespace Common
         linear_tolerance_factor   = prm.get_double("Linear tolerance factor");
         extrapolate_initial_guess = prm.get_bool("Extrapolate initial guess");
         stabilization_factor      = prm.get_double("Stabilization factor");
+        divergence_bound          = prm.get_double("Divergence bound");
       }
       prm.leave_subsection();
     }
@@ -238,6 +251,16 @@ namespace Common
               !std::isfinite(residual.complementarity))
             {
               statistics.failure = "non-finite residual";
+              return statistics;
+            }
+          if (parameters.divergence_bound > 0. &&
+              residual.equilibrium > parameters.divergence_bound)
+            {
+              statistics.failure =
+                "the iteration diverges (equilibrium residual " +
+                IO::Console::format(residual.equilibrium) +
+                " above the divergence bound " +
+                IO::Console::format(parameters.divergence_bound) + ")";
               return statistics;
             }
           if (n_changed == 0 && residual.complementarity < parameters.tolerance)

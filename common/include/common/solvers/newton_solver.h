@@ -52,6 +52,9 @@ namespace Common
       /** Pseudo-transient continuation of a failed step: stiffness factor
        * of the springs to the last state (dimensionless; 0: off). */
       double stabilization_factor = 0.;
+      /** An iterate whose relative equilibrium residual exceeds this
+       * fails the step at once (0: no bound). */
+      double divergence_bound = 0.;
     };
 
     /**
