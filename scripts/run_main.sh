@@ -144,6 +144,20 @@ python3 scripts/pin_mesh_study.py "${pin_flags[@]}" \
   --build "$root/build-release" --out "$results/studies/loaded_pin_mesh"
 echo "== mesh study wall time: $((SECONDS - study_start)) s"
 
+study_start=$SECONDS
+echo "== mesh study (benchmark 3, Q2, mu = 0.1342)"
+# Through the thickness and along the length; the two finest runs give the
+# error estimate.
+if $quick; then
+  forming_meshes=(2x30 2x60)
+else
+  forming_meshes=(2x60 2x120 4x120)
+fi
+python3 scripts/forming_study.py --mus 01342 --degrees 2 --meshes "${forming_meshes[@]}" \
+  --build "$root/build-release" --out "$results/studies/sheet_forming" ||
+  echo "== forming study: some runs failed or did not converge (see the table)"
+echo "== mesh study wall time: $((SECONDS - study_start)) s"
+
 # Every judged check of the report compares a result with a reference that
 # holds for it, so a failed check (or a case without a result) is a
 # regression: the main job then exits non-zero, after the wall times.
