@@ -16,10 +16,13 @@ main(int argc, char *argv[])
     argv,
     "reynolds_roller",
     "FENET benchmark 5, a rigid steel roller pressed into a rubber strip "
-    "and turned a full revolution (plane strain)",
+    "and turned a full revolution (plane strain or its 3D extrusion)",
     &ReynoldsRoller::Parameters::declare_parameters,
     [](const std::string &parameter_file) {
       const ReynoldsRoller::Parameters parameters(parameter_file);
-      ReynoldsRoller::RollingProblem(parameters).run();
+      if (parameters.geometry.three_d)
+        ReynoldsRoller::RollingProblem<3>(parameters).run();
+      else
+        ReynoldsRoller::RollingProblem<2>(parameters).run();
     });
 }

@@ -36,6 +36,20 @@ namespace ReynoldsRoller
                         Patterns::Double(),
                         "Thickness H of the rubber strip, y from -H/2 to "
                         "H/2. Units: mm.");
+      prm.declare_entry(
+        "Dimension",
+        "plane strain",
+        Patterns::Selection("plane strain|3d extrusion"),
+        "The model: 'plane strain' (the x-y section, forces per mm of "
+        "depth) or '3d extrusion' (strip and roller extruded along z by "
+        "'Width', u_z = 0 on the strip's faces z = 0 and z = W: the "
+        "plane-strain problem solved in 3D; forces are reported per mm of "
+        "depth as well).");
+      prm.declare_entry("Width",
+                        "10",
+                        Patterns::Double(),
+                        "Width W of the 3D extrusion, z from 0 to W; "
+                        "ignored in plane strain. Units: mm.");
     }
     prm.leave_subsection();
   }
@@ -58,6 +72,8 @@ namespace ReynoldsRoller
                                         s,
                                         "Strip length ahead of the roller");
       thickness = Common::IO::get_positive_length(prm, s, "Strip thickness");
+      three_d   = (prm.get("Dimension") == "3d extrusion");
+      width     = Common::IO::get_positive_length(prm, s, "Width");
     }
     prm.leave_subsection();
     AssertThrow(length_behind > roller_radius && length_ahead > roller_radius,
@@ -90,6 +106,11 @@ namespace ReynoldsRoller
                         "5",
                         Patterns::Integer(1, 200),
                         "Cells through the strip's thickness (uniform).");
+      prm.declare_entry("Number of cells across the width",
+                        "1",
+                        Patterns::Integer(1, 200),
+                        "Cells across the width W of the 3D extrusion "
+                        "(uniform); ignored in plane strain.");
     }
     prm.leave_subsection();
   }
@@ -97,7 +118,7 @@ namespace ReynoldsRoller
 
 
   void
-  MeshParameters::parse_parameters(ParameterHandler &prm)
+  MeshParameters::parse_parameters(ParameterHandler &prm, const bool three_d)
   {
     prm.enter_subsection("Mesh");
     {
@@ -105,17 +126,20 @@ namespace ReynoldsRoller
       n_cells_length = prm.get_integer("Number of cells along the length");
       n_cells_thickness =
         prm.get_integer("Number of cells through the thickness");
+      n_cells_width =
+        three_d ? prm.get_integer("Number of cells across the width") : 1;
     }
     prm.leave_subsection();
     // Refused before the mesh is built: 1e5 Q2-P1 cells are some 8e5
-    // DoFs, what a direct solver handles on a workstation.
-    constexpr unsigned long max_cells = 100000;
-    const unsigned long     n_cells =
-      static_cast<unsigned long>(n_cells_length) * n_cells_thickness;
+    // DoFs in 2D, what a direct solver handles on a workstation; a 3D
+    // cell has about three times the DoFs of a 2D one.
+    const unsigned long max_cells = three_d ? 30000 : 100000;
+    const unsigned long n_cells   = static_cast<unsigned long>(n_cells_length) *
+                                  n_cells_thickness * n_cells_width;
     AssertThrow(n_cells <= max_cells,
                 ExcMessage("Mesh: 'Number of cells along the length' times "
-                           "'Number of cells through the thickness' would "
-                           "make a mesh of " +
+                           "'Number of cells through the thickness' (and "
+                           "across the width in 3D) would make a mesh of " +
                            std::to_string(n_cells) + " cells, more than " +
                            std::to_string(max_cells) + "."));
   }
@@ -210,7 +234,7 @@ namespace ReynoldsRoller
     prm.parse_input(filename);
 
     geometry.parse_parameters(prm);
-    mesh.parse_parameters(prm);
+    mesh.parse_parameters(prm, geometry.three_d);
     Common::Problems::ContactRunParameters::parse_parameters(prm,
                                                              load_channels());
     supports.parse_parameters(prm, load_program.stages.size());

@@ -38,6 +38,13 @@ namespace ReynoldsRoller
     double length_behind, length_ahead;
     /** Strip thickness H (mm). */
     double thickness;
+    /** True for the 3D extrusion (section 2, item 4 of the spec): both
+     * bodies extruded by the width W along z, u_z = 0 on the strip's z
+     * faces; false for plane strain. */
+    bool three_d;
+    /** Width W of the 3D extrusion, z from 0 to W (mm); forces are still
+     * reported per mm of depth. */
+    double width;
   };
 
   /** Subsection "Mesh". */
@@ -45,13 +52,16 @@ namespace ReynoldsRoller
   {
     static void
     declare_parameters(ParameterHandler &prm);
+    /** Read and check the size of the mesh (its cells across the width
+     * count only if @p three_d). */
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const bool three_d);
 
     /** Degree of the Lagrange element (1 or 2). */
     unsigned int element_degree;
-    /** Cells along the strip and through its thickness (uniform). */
-    unsigned int n_cells_length, n_cells_thickness;
+    /** Cells along the strip, through its thickness and, in 3D, across
+     * its width (uniform). */
+    unsigned int n_cells_length, n_cells_thickness, n_cells_width;
   };
 
   /** Subsection "Supports": the strip's bottom. */

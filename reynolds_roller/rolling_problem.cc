@@ -19,24 +19,47 @@
 
 namespace ReynoldsRoller
 {
-  RollingProblem::RollingProblem(const Parameters &parameters)
+  template <int dim>
+  RollingProblem<dim>::RollingProblem(const Parameters &parameters)
     : Base(parameters, parameters.mesh.element_degree, "reynolds_roller")
     , parameters(parameters)
   {}
 
 
 
+  template <int dim>
   std::string
-  RollingProblem::title() const
+  RollingProblem<dim>::title() const
   {
-    return "reynolds_roller: rigid steel roller pressed into a rubber strip "
-           "and turned (plane strain)";
+    return std::string("reynolds_roller: rigid steel roller pressed into a "
+                       "rubber strip and turned (") +
+           (dim == 2 ? "plane strain" : "3D extrusion, u_z = 0 on its faces") +
+           ")";
   }
 
 
 
+  template <int dim>
+  double
+  RollingProblem<dim>::depth() const
+  {
+    return dim == 3 ? parameters.geometry.width : 1.;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, 2>
+  RollingProblem<dim>::per_unit_depth(const Tensor<1, dim> &force) const
+  {
+    return Tensor<1, 2>({force[0], force[1]}) / depth();
+  }
+
+
+
+  template <int dim>
   std::vector<std::string>
-  RollingProblem::result_files() const
+  RollingProblem<dim>::result_files() const
   {
     return {"history.csv",
             "creep.png",
@@ -54,32 +77,55 @@ namespace ReynoldsRoller
 
 
 
-  std::array<Point<RollingProblem::dim>, n_corners>
-  RollingProblem::corners() const
+  template <int dim>
+  std::array<Point<dim>, n_corners>
+  RollingProblem<dim>::corners() const
   {
-    const auto  &g = parameters.geometry;
-    const double h = 0.5 * g.thickness;
-    return {{Point<dim>(-g.length_behind, h),
-             Point<dim>(-g.length_behind, -h),
-             Point<dim>(g.length_ahead, h),
-             Point<dim>(g.length_ahead, -h)}};
+    const auto                                        &g = parameters.geometry;
+    const double                                       h = 0.5 * g.thickness;
+    std::array<Point<dim>, n_corners>                  points;
+    const std::array<std::array<double, 2>, n_corners> xy = {
+      {{{-g.length_behind, h}},
+       {{-g.length_behind, -h}},
+       {{g.length_ahead, h}},
+       {{g.length_ahead, -h}}}};
+    for (unsigned int c = 0; c < n_corners; ++c)
+      for (unsigned int d = 0; d < 2; ++d)
+        points[c][d] = xy[c][d];
+    return points;
   }
 
 
 
-  // The strip [-L1, L2] x [-H/2, H/2] and, apart from it, one carrier cell
-  // whose first vertex is the roller's reference node.
+  // The strip [-L1, L2] x [-H/2, H/2] (x [0, W] in 3D) and, apart from
+  // it, one carrier cell whose first vertex is the roller's reference
+  // node.
+  template <int dim>
   void
-  RollingProblem::make_grid()
+  RollingProblem<dim>::make_grid()
   {
-    const auto        &g = parameters.geometry;
-    const double       h = 0.5 * g.thickness;
+    const auto               &g           = parameters.geometry;
+    const double              h           = 0.5 * g.thickness;
+    const auto               &m           = parameters.mesh;
+    std::vector<unsigned int> repetitions = {m.n_cells_length,
+                                             m.n_cells_thickness};
+    Point<dim>                lower, upper, carrier_lower, carrier_upper;
+    lower[0]         = -g.length_behind;
+    lower[1]         = -h;
+    upper[0]         = g.length_ahead;
+    upper[1]         = h;
+    carrier_lower[0] = -g.length_behind - 2. * g.thickness;
+    carrier_lower[1] = -h;
+    carrier_upper[0] = -g.length_behind - g.thickness;
+    carrier_upper[1] = 0.;
+    if constexpr (dim == 3)
+      {
+        repetitions.push_back(m.n_cells_width);
+        upper[2]         = g.width;
+        carrier_upper[2] = g.width;
+      }
     Triangulation<dim> strip, carrier;
-    GridGenerator::subdivided_hyper_rectangle(
-      strip,
-      {parameters.mesh.n_cells_length, parameters.mesh.n_cells_thickness},
-      Point<dim>(-g.length_behind, -h),
-      Point<dim>(g.length_ahead, h));
+    GridGenerator::subdivided_hyper_rectangle(strip, repetitions, lower, upper);
     const double tolerance = 1e-8 * g.thickness;
     for (const auto &cell : strip.active_cell_iterators())
       {
@@ -88,17 +134,18 @@ namespace ReynoldsRoller
           if (face->at_boundary())
             {
               const auto c = face->center();
+              const bool side =
+                dim == 3 && (std::abs(c[dim - 1]) < tolerance ||
+                             std::abs(c[dim - 1] - upper[dim - 1]) < tolerance);
               face->set_boundary_id(
+                side                           ? BoundaryIds::sides :
                 std::abs(c[1] + h) < tolerance ? BoundaryIds::bottom :
                 std::abs(c[1] - h) < tolerance ? BoundaryIds::top :
                                                  BoundaryIds::ends);
             }
       }
     // Behind the strip's left end, clear of the roller.
-    GridGenerator::hyper_rectangle(
-      carrier,
-      Point<dim>(-g.length_behind - 2. * g.thickness, -h),
-      Point<dim>(-g.length_behind - g.thickness, 0.));
+    GridGenerator::hyper_rectangle(carrier, carrier_lower, carrier_upper);
     for (const auto &cell : carrier.active_cell_iterators())
       cell->set_material_id(MaterialIds::roller_carrier);
     Common::Geometry::join_bodies<dim>({&strip, &carrier}, triangulation);
@@ -106,8 +153,9 @@ namespace ReynoldsRoller
 
 
 
-  Common::Contact::RigidTool<RollingProblem::dim>
-  RollingProblem::make_roller() const
+  template <int dim>
+  Common::Contact::RigidTool<dim>
+  RollingProblem<dim>::make_roller() const
   {
     const auto    &g = parameters.geometry;
     const double   R = g.roller_radius;
@@ -120,11 +168,13 @@ namespace ReynoldsRoller
     circle.add_arc(centre, R, start, start + 2. * numbers::PI);
 
     Common::Contact::RigidTool<dim> roller;
-    roller.name = "roller";
-    roller.surface =
-      std::make_shared<const Common::Contact::RigidSurface<dim>>(circle);
+    roller.name    = "roller";
+    roller.surface = std::make_shared<const Common::Contact::RigidSurface<dim>>(
+      circle,
+      Common::Contact::ProfileSweep::extrusion_along_z);
     roller.reference_node_dofs = roller_carrier.reference_node_dofs;
-    roller.centre              = centre;
+    roller.centre[0]           = centre[0];
+    roller.centre[1]           = centre[1];
     // The channel is clockwise in degrees; the tool's angle is
     // counterclockwise in radians.
     roller.rotation = [](const Common::Solvers::LoadState &state) {
@@ -135,18 +185,23 @@ namespace ReynoldsRoller
 
 
 
+  template <int dim>
   void
-  RollingProblem::setup_system()
+  RollingProblem<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
 
     // The bottom's y DoFs carry the indentation; the roller's carrier is
-    // fixed (the axis does not move).
+    // fixed (the axis does not move); in 3D the z faces are held in z.
+    std::vector<std::pair<unsigned int, std::vector<types::boundary_id>>>
+      zero_components = {{1, {BoundaryIds::bottom}}};
+    if (dim == 3)
+      zero_components.push_back({dim - 1, {BoundaryIds::sides}});
     Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
       {},
-      {{1, {BoundaryIds::bottom}}},
+      zero_components,
       constraints_dirichlet_and_hanging_nodes);
     roller_carrier = Common::Physics::add_prescribed_translation_constraints(
       dof_handler,
@@ -180,15 +235,15 @@ namespace ReynoldsRoller
         parameters.contact.search_distance,
         false);
     geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
-    setup_contact_problem(Common::Physics::create_solid_operator<dim>(
-                            parameters.solid,
-                            mapping,
-                            fe,
-                            {{MaterialIds::strip, parameters.rubber_material},
-                             {MaterialIds::roller_carrier,
-                              parameters.rubber_material}}),
-                          std::move(geometry),
-                          parameters.rubber_material.youngs_modulus);
+    this->setup_contact_problem(
+      Common::Physics::create_solid_operator<dim>(
+        parameters.solid,
+        mapping,
+        fe,
+        {{MaterialIds::strip, parameters.rubber_material},
+         {MaterialIds::roller_carrier, parameters.rubber_material}}),
+      std::move(geometry),
+      parameters.rubber_material.youngs_modulus);
 
     // Held in x while pressing.
     if (parameters.supports.bottom_free_stage != 1)
@@ -205,8 +260,9 @@ namespace ReynoldsRoller
   // under the roller by 10 % over the roller's radius, about the roller's
   // force at the benchmark's indentation (3 mm of 20: 15 %), so that the
   // round-off of the residuals stays below the Newton tolerance.
+  template <int dim>
   Common::Problems::ExternalLoad
-  RollingProblem::external_load() const
+  RollingProblem<dim>::external_load() const
   {
     Common::Problems::ExternalLoad load;
     // Once the bottom is free in x: the support's reaction there, less
@@ -219,7 +275,7 @@ namespace ReynoldsRoller
         rhs(dof) += factor * reaction;
     };
     const double scale = 0.1 * parameters.rubber_material.youngs_modulus *
-                         parameters.geometry.roller_radius;
+                         parameters.geometry.roller_radius * depth();
     load.magnitude = [scale](const Common::Solvers::LoadState &) {
       return scale;
     };
@@ -236,8 +292,9 @@ namespace ReynoldsRoller
 
 
 
+  template <int dim>
   void
-  RollingProblem::postprocess_step(
+  RollingProblem<dim>::postprocess_step(
     const Common::Solvers::StepInfo         &step,
     const Common::Solvers::NewtonStatistics &statistics)
   {
@@ -254,8 +311,8 @@ namespace ReynoldsRoller
     record.time          = step.state.time;
     record.indentation   = step.state.value("Indentation");
     record.angle         = step.state.value("Roller angle");
-    record.roller_force  = loads[0].force;
-    record.roller_moment = loads[0].moment[2];
+    record.roller_force  = per_unit_depth(loads[0].force);
+    record.roller_moment = loads[0].moment[2] / depth();
     // The whole force of the bottom on the strip: its supports' reactions
     // and the support force being released (the internal forces there).
     Common::Problems::ExternalLoad internal_only = external_load();
@@ -264,9 +321,9 @@ namespace ReynoldsRoller
                            TrilinosWrappers::MPI::Vector &) {
     };
     record.bottom_reaction =
-      contact_problem->reaction_forces({BoundaryIds::bottom},
-                                       step.state,
-                                       internal_only)[0];
+      per_unit_depth(contact_problem->reaction_forces({BoundaryIds::bottom},
+                                                      step.state,
+                                                      internal_only)[0]);
     const double magnitude = record.roller_force.norm();
     record.balance =
       magnitude > 0. ?
@@ -322,4 +379,9 @@ namespace ReynoldsRoller
       }
     Common::Problems::warn_if_search_edge_reached(console, *contact_problem);
   }
+
+
+
+  template class RollingProblem<2>;
+  template class RollingProblem<3>;
 } // namespace ReynoldsRoller

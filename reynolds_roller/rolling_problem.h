@@ -32,7 +32,7 @@ namespace ReynoldsRoller
     constexpr types::material_id roller_carrier = 2;
   } // namespace MaterialIds
 
-  /** Boundary ids of the strip. */
+  /** Boundary ids of the strip (in 3D also its z faces). */
   namespace BoundaryIds
   {
     /** y = -H/2: pushed up by the indentation. */
@@ -41,6 +41,8 @@ namespace ReynoldsRoller
     constexpr types::boundary_id top = 2;
     /** x = -L1 and x = L2: free. */
     constexpr types::boundary_id ends = 3;
+    /** z = 0 and z = W of the 3D extrusion: u_z = 0. */
+    constexpr types::boundary_id sides = 4;
   } // namespace BoundaryIds
 
   /** The strip's corners: top left (point A), bottom left, top right,
@@ -73,16 +75,31 @@ namespace ReynoldsRoller
   /**
    * @brief The rolling problem: the strip's top (secondary surface)
    * against the rigid roller (an analytic circle, the primary side),
-   * contact in the current configuration.
+   * contact in the current configuration. In plane strain (dim = 2) or as
+   * its 3D extrusion (dim = 3: the roller a cylinder along z, u_z = 0 on
+   * the strip's z faces), whose results are the plane-strain ones and are
+   * reported per mm of depth, on the face z = 0.
    */
-  class RollingProblem : public Common::Problems::ContactApplication<2>
+  template <int dim>
+  class RollingProblem : public Common::Problems::ContactApplication<dim>
   {
   public:
     explicit RollingProblem(const Parameters &parameters);
 
   private:
-    static constexpr int dim = 2;
-    using Base               = Common::Problems::ContactApplication<dim>;
+    using Base = Common::Problems::ContactApplication<dim>;
+    using Base::console;
+    using Base::constraints_dirichlet_and_hanging_nodes;
+    using Base::contact_geometry;
+    using Base::contact_problem;
+    using Base::dof_handler;
+    using Base::fe;
+    using Base::mapping;
+    using Base::mpi_communicator;
+    using Base::solid;
+    using Base::triangulation;
+    using Base::write_plots;
+    using Base::write_summary;
 
     std::string
     title() const override;
@@ -112,9 +129,20 @@ namespace ReynoldsRoller
     void
     write_half_turn_profile(const double angle);
 
-    /** The strip's corners in the reference configuration, A first. */
+    /** The strip's corners in the reference configuration, A first (in
+     * 3D on the face z = 0). */
     std::array<Point<dim>, n_corners>
     corners() const;
+
+    /** The depth the forces of the model act on: 1 mm in plane strain,
+     * the width W in 3D (mm). */
+    double
+    depth() const;
+
+    /** The x and y components of @p force divided by depth() (N per mm of
+     * depth). */
+    Tensor<1, 2>
+    per_unit_depth(const Tensor<1, dim> &force) const;
 
     const Parameters                           &parameters;
     Common::Physics::PrescribedTranslation<dim> roller_carrier;

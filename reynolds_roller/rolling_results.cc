@@ -37,16 +37,34 @@ namespace ReynoldsRoller
 
 
 
+  template <int dim>
   void
-  RollingProblem::write_half_turn_profile(const double angle)
+  RollingProblem<dim>::write_half_turn_profile(const double angle)
   {
     const auto &out = parameters.output;
-    const auto  profile =
+    // In 3D the nodes of the face z = 0.
+    auto profile =
       Common::Contact::contact_profile(contact_problem->coupling(),
                                        contact_problem->enforcement(),
                                        contact_problem->displacement(),
                                        contact_problem->bulk_residual(),
                                        0);
+    if (dim == 3)
+      profile.erase(std::remove_if(profile.begin(),
+                                   profile.end(),
+                                   [this](const auto &p) {
+                                     return std::abs(p.position[dim - 1]) >
+                                            1e-8 * parameters.geometry.width;
+                                   }),
+                    profile.end());
+    // Components along the tangent (n_y, -n_x) of the x-y plane, as
+    // ContactPointResult::tangential_traction in 2D.
+    const auto along_tangent = [](const auto &p, const Tensor<1, dim> &v) {
+      Tensor<1, dim> t;
+      t[0] = p.normal[1];
+      t[1] = -p.normal[0];
+      return v * t / t.norm();
+    };
     // The zone and a roller radius on either side of it, by the closed
     // nodes' reference positions.
     double first = std::numeric_limits<double>::infinity(), last = -first;
@@ -75,9 +93,9 @@ namespace ReynoldsRoller
           rows.push_back({{x,
                            p.position[0],
                            p.pressure,
-                           p.tangential_traction,
+                           along_tangent(p, p.tangential_traction_vector),
                            mu * p.pressure,
-                           p.slip,
+                           along_tangent(p, p.slip_vector),
                            p.status == "open"  ? 0. :
                            p.status == "stick" ? 1. :
                                                  2.}});
@@ -129,8 +147,9 @@ namespace ReynoldsRoller
 
 
 
+  template <int dim>
   void
-  RollingProblem::output_results(
+  RollingProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
     const auto  &out  = parameters.output;
@@ -287,7 +306,9 @@ namespace ReynoldsRoller
       Common::Problems::case_summary(parameters,
                                      parameters.mesh.element_degree,
                                      mpi_communicator);
-    case_description.set("n_cells_along_length", parameters.mesh.n_cells_length)
+    case_description
+      .set("dimension", dim == 2 ? "plane strain" : "3d extrusion")
+      .set("n_cells_along_length", parameters.mesh.n_cells_length)
       .set("n_cells_through_thickness", parameters.mesh.n_cells_thickness)
       .set("roller", "rigid")
       .set("bottom_free_in_x_from_stage",
@@ -331,7 +352,23 @@ namespace ReynoldsRoller
     if (full_turn)
       ratios.set("dx_A_over_reference", last.corner_ux[0] / published_dx_a);
 
+    if (dim == 3)
+      case_description.set("width_mm", parameters.geometry.width)
+        .set("n_cells_across_width", parameters.mesh.n_cells_width);
     write_summary(stepping,
                   {case_description, mesh, results, reference, ratios});
   }
+
+
+
+  template void
+  RollingProblem<2>::write_half_turn_profile(const double);
+  template void
+  RollingProblem<3>::write_half_turn_profile(const double);
+  template void
+  RollingProblem<2>::output_results(
+    const Common::Solvers::LoadSteppingStatistics &);
+  template void
+  RollingProblem<3>::output_results(
+    const Common::Solvers::LoadSteppingStatistics &);
 } // namespace ReynoldsRoller
