@@ -42,29 +42,15 @@ namespace ReynoldsRoller
   RollingProblem<dim>::write_half_turn_profile(const double angle)
   {
     const auto &out = parameters.output;
-    // In 3D the nodes of the face z = 0.
-    auto profile =
+    // In 3D the nodes of the face z = 0, read as a plane-strain profile.
+    const auto profile = Common::Contact::plane_section(
       Common::Contact::contact_profile(contact_problem->coupling(),
                                        contact_problem->enforcement(),
                                        contact_problem->displacement(),
                                        contact_problem->bulk_residual(),
-                                       0);
-    if (dim == 3)
-      profile.erase(std::remove_if(profile.begin(),
-                                   profile.end(),
-                                   [this](const auto &p) {
-                                     return std::abs(p.position[dim - 1]) >
-                                            1e-8 * parameters.geometry.width;
-                                   }),
-                    profile.end());
-    // Components along the tangent (n_y, -n_x) of the x-y plane, as
-    // ContactPointResult::tangential_traction in 2D.
-    const auto along_tangent = [](const auto &p, const Tensor<1, dim> &v) {
-      Tensor<1, dim> t;
-      t[0] = p.normal[1];
-      t[1] = -p.normal[0];
-      return v * t / t.norm();
-    };
+                                       0),
+      0.,
+      parameters.geometry.thickness);
     // The zone and a roller radius on either side of it, by the closed
     // nodes' reference positions.
     double first = std::numeric_limits<double>::infinity(), last = -first;
@@ -83,19 +69,22 @@ namespace ReynoldsRoller
       if (p.position[0] >= first - R && p.position[0] <= last + R)
         {
           // The current position: collective over the ranks.
+          Point<dim> X;
+          X[0] = p.position[0];
+          X[1] = p.position[1];
           const double x =
-            p.position[0] +
+            X[0] +
             Common::Physics::displacement_at(mapping,
                                              dof_handler,
                                              contact_problem->displacement(),
-                                             p.position,
+                                             X,
                                              "a node of the strip's top")[0];
           rows.push_back({{x,
                            p.position[0],
                            p.pressure,
-                           along_tangent(p, p.tangential_traction_vector),
+                           p.tangential_traction,
                            mu * p.pressure,
-                           along_tangent(p, p.slip_vector),
+                           p.slip,
                            p.status == "open"  ? 0. :
                            p.status == "stick" ? 1. :
                                                  2.}});

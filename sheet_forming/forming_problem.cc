@@ -18,7 +18,8 @@
 
 namespace SheetForming
 {
-  FormingProblem::FormingProblem(const Parameters &parameters)
+  template <int dim>
+  FormingProblem<dim>::FormingProblem(const Parameters &parameters)
     : Base(parameters, parameters.mesh.element_degree, "sheet_forming")
     , parameters(parameters)
     , hold_dof(numbers::invalid_dof_index)
@@ -26,17 +27,31 @@ namespace SheetForming
 
 
 
+  template <int dim>
   std::string
-  FormingProblem::title() const
+  FormingProblem<dim>::title() const
   {
-    return "sheet_forming: aluminium strip bent by a rigid punch into a "
-           "rigid die, then released (plane strain half model)";
+    return std::string("sheet_forming: aluminium strip bent by a rigid punch "
+                       "into a rigid die, then released (") +
+           (dim == 2 ? "plane strain half model" :
+                       "3D strip, quarter model, edge free") +
+           ")";
   }
 
 
 
+  template <int dim>
+  double
+  FormingProblem<dim>::full_strip_factor() const
+  {
+    return dim == 2 ? 2. * parameters.geometry.width : 4.;
+  }
+
+
+
+  template <int dim>
   std::vector<std::string>
-  FormingProblem::result_files() const
+  FormingProblem<dim>::result_files() const
   {
     std::vector<std::string> files = {"punch_force.csv",
                                       "punch_force.png",
@@ -60,18 +75,30 @@ namespace SheetForming
 
 
 
-  // The sheet 0 <= x <= L/2, 0 <= y <= t, and one carrier cell per tool
-  // apart from it: the carriers' nodes are the tools' reference nodes.
+  // The sheet 0 <= x <= L/2, 0 <= y <= t (0 <= z <= W/2 in 3D), and one
+  // carrier cell per tool apart from it: the carriers' nodes are the
+  // tools' reference nodes.
+  template <int dim>
   void
-  FormingProblem::make_grid()
+  FormingProblem<dim>::make_grid()
   {
-    const auto        &g = parameters.geometry;
+    const auto               &g           = parameters.geometry;
+    const auto               &m           = parameters.mesh;
+    std::vector<unsigned int> repetitions = {m.n_cells_length,
+                                             m.n_cells_thickness};
+    Point<dim>                upper;
+    upper[0] = g.sheet_half_length;
+    upper[1] = g.thickness;
+    if constexpr (dim == 3)
+      {
+        repetitions.push_back(m.n_cells_width);
+        upper[2] = 0.5 * g.width;
+      }
     Triangulation<dim> sheet, punch, die;
-    GridGenerator::subdivided_hyper_rectangle(
-      sheet,
-      {parameters.mesh.n_cells_length, parameters.mesh.n_cells_thickness},
-      Point<dim>(0., 0.),
-      Point<dim>(g.sheet_half_length, g.thickness));
+    GridGenerator::subdivided_hyper_rectangle(sheet,
+                                              repetitions,
+                                              Point<dim>(),
+                                              upper);
     const double tolerance = 1e-8 * g.thickness;
     for (const auto &cell : sheet.active_cell_iterators())
       {
@@ -80,27 +107,38 @@ namespace SheetForming
           if (face->at_boundary())
             {
               const auto c = face->center();
-              face->set_boundary_id(
-                std::abs(c[0]) < tolerance ? BoundaryIds::symmetry :
-                std::abs(c[0] - g.sheet_half_length) < tolerance ?
-                                             BoundaryIds::end :
-                                             BoundaryIds::surface);
+              if (dim == 3 && std::abs(c[dim - 1]) < tolerance)
+                face->set_boundary_id(BoundaryIds::width_symmetry);
+              else if (dim == 3 &&
+                       std::abs(c[dim - 1] - upper[dim - 1]) < tolerance)
+                face->set_boundary_id(BoundaryIds::edge);
+              else
+                face->set_boundary_id(
+                  std::abs(c[0]) < tolerance ? BoundaryIds::symmetry :
+                  std::abs(c[0] - g.sheet_half_length) < tolerance ?
+                                               BoundaryIds::end :
+                                               BoundaryIds::surface);
             }
       }
     Common::Geometry::perturb_interior_vertices(
       sheet,
       parameters.mesh.interior_perturbation,
       "Mesh: 'Interior node perturbation'");
-    // Carriers left of the axis, clear of the sheet and the tools' paths.
+    // Carriers left of the axis, clear of the sheet and the tools' paths:
+    // cubes of the sheet's thickness (squares in 2D) with their lower
+    // corner at (x, y, 0).
     const double size = g.thickness;
-    GridGenerator::hyper_rectangle(punch,
-                                   Point<dim>(-g.die_radius - 10., 10.),
-                                   Point<dim>(-g.die_radius - 10. + size,
-                                              10. + size));
-    GridGenerator::hyper_rectangle(die,
-                                   Point<dim>(-g.die_radius - 10., -10.),
-                                   Point<dim>(-g.die_radius - 10. + size,
-                                              -10. + size));
+    const auto   place =
+      [size](Triangulation<dim> &carrier, const double x, const double y) {
+        Point<dim> lower, upper;
+        lower[0] = x;
+        lower[1] = y;
+        for (unsigned int d = 0; d < dim; ++d)
+          upper[d] = lower[d] + size;
+        GridGenerator::hyper_rectangle(carrier, lower, upper);
+      };
+    place(punch, -g.die_radius - 10., 10.);
+    place(die, -g.die_radius - 10., -10.);
     for (const auto &cell : punch.active_cell_iterators())
       cell->set_material_id(MaterialIds::punch_carrier);
     for (const auto &cell : die.active_cell_iterators())
@@ -116,8 +154,9 @@ namespace SheetForming
   // the shoulder fillet about (R2 + R3, -R3) and the cavity about
   // (0, -R3). Both arcs reach a little past the axis. A profile keeps its
   // body on its left.
-  std::vector<Common::Contact::RigidTool<FormingProblem::dim>>
-  FormingProblem::make_tools() const
+  template <int dim>
+  std::vector<Common::Contact::RigidTool<dim>>
+  FormingProblem<dim>::make_tools() const
   {
     const auto    &g    = parameters.geometry;
     const double   pi   = numbers::PI;
@@ -138,34 +177,43 @@ namespace SheetForming
     die.add_arc(Point<2>(xs, -R3), R3, 0.5 * pi, pi);
     die.add_arc(Point<2>(0., -R3), R2, 0., -0.5 * pi - past);
 
+    // In 3D both extruded along z, wider than the strip.
+    const auto extrude = Common::Contact::ProfileSweep::extrusion_along_z;
     std::vector<Common::Contact::RigidTool<dim>> tools(2);
     tools[0].name = "punch";
     tools[0].surface =
-      std::make_shared<const Common::Contact::RigidSurface<dim>>(punch);
+      std::make_shared<const Common::Contact::RigidSurface<dim>>(punch,
+                                                                 extrude);
     tools[0].reference_node_dofs = punch_carrier.reference_node_dofs;
-    tools[0].centre              = punch_centre;
+    tools[0].centre[1]           = punch_centre[1];
     tools[1].name                = "die";
     tools[1].surface =
-      std::make_shared<const Common::Contact::RigidSurface<dim>>(die);
+      std::make_shared<const Common::Contact::RigidSurface<dim>>(die, extrude);
     tools[1].reference_node_dofs = die_carrier.reference_node_dofs;
-    tools[1].centre              = Point<dim>(0., -R3);
+    tools[1].centre[1]           = -R3;
     return tools;
   }
 
 
 
+  template <int dim>
   void
-  FormingProblem::setup_system()
+  FormingProblem<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
 
-    // u_x = 0 on the symmetry plane; the tools' carriers move as the load
-    // program prescribes. Nothing else holds the sheet.
+    // u_x = 0 on the symmetry plane (and u_z = 0 on the one across the
+    // width in 3D); the tools' carriers move as the load program
+    // prescribes. Nothing else holds the sheet.
+    std::vector<std::pair<unsigned int, std::vector<types::boundary_id>>>
+      zero_components = {{0, {BoundaryIds::symmetry}}};
+    if (dim == 3)
+      zero_components.push_back({dim - 1, {BoundaryIds::width_symmetry}});
     Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
       {},
-      {{0, {BoundaryIds::symmetry}}},
+      zero_components,
       constraints_dirichlet_and_hanging_nodes);
     punch_carrier = Common::Physics::add_prescribed_translation_constraints(
       dof_handler,
@@ -177,7 +225,8 @@ namespace SheetForming
       constraints_dirichlet_and_hanging_nodes);
 
     // The node held by the release: on the axis, nearest the mid-plane
-    // (not a contact node).
+    // (not a contact node); in 3D on the plane z = 0. With the symmetry
+    // planes it removes the only rigid motion left, along y.
     const auto  &g = parameters.geometry;
     const double h = g.thickness / (parameters.mesh.n_cells_thickness *
                                     parameters.mesh.element_degree);
@@ -188,7 +237,8 @@ namespace SheetForming
     hold_dof = numbers::invalid_dof_index;
     {
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      const Point<dim>                     target(0., y_hold);
+      Point<dim>                           target;
+      target[1] = y_hold;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->material_id() == MaterialIds::sheet &&
             cell->center()[0] <
@@ -216,7 +266,7 @@ namespace SheetForming
         parameters.contact.search_distance,
         false);
     geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
-    setup_contact_problem(
+    this->setup_contact_problem(
       Common::Physics::create_solid_operator<dim>(
         parameters.solid,
         mapping,
@@ -231,9 +281,11 @@ namespace SheetForming
 
 
   // No applied forces: the tools move. The scale of the residuals is the
-  // force per unit depth that strains the sheet's section by 1e-3.
+  // force per unit depth that strains the sheet's section by 1e-3 (times
+  // the half-width in 3D).
+  template <int dim>
   Common::Problems::ExternalLoad
-  FormingProblem::external_load() const
+  FormingProblem<dim>::external_load() const
   {
     Common::Problems::ExternalLoad load;
     load.add = [](const Common::Solvers::LoadState &,
@@ -241,60 +293,72 @@ namespace SheetForming
                   TrilinosWrappers::MPI::Vector &) {
     };
     const double scale = 1e-3 * parameters.sheet_material.youngs_modulus *
-                         parameters.geometry.thickness;
+                         parameters.geometry.thickness *
+                         (dim == 3 ? 0.5 * parameters.geometry.width : 1.);
     load.magnitude = [scale](const Common::Solvers::LoadState &) {
       return scale;
     };
     load.prescribed_displacements =
       [this](const Common::Solvers::LoadState          &state,
              std::map<types::global_dof_index, double> &values) {
-        punch_carrier.prescribe(Tensor<1, dim>(
-                                  {0., -state.value("Punch displacement")}),
-                                values);
-        die_carrier.prescribe(Tensor<1, dim>(
-                                {0., -state.value("Die displacement")}),
-                              values);
+        Tensor<1, dim> punch, die;
+        punch[1] = -state.value("Punch displacement");
+        die[1]   = -state.value("Die displacement");
+        punch_carrier.prescribe(punch, values);
+        die_carrier.prescribe(die, values);
       };
     return load;
   }
 
 
 
-  Point<FormingProblem::dim>
-  FormingProblem::deformed_point(const double s, const double y) const
+  template <int dim>
+  Point<2>
+  FormingProblem<dim>::deformed_point(const double s,
+                                      const double y,
+                                      const double z) const
   {
-    const Point<dim> X(s, y);
-    return X + Common::Physics::displacement_at(mapping,
-                                                dof_handler,
-                                                contact_problem->displacement(),
-                                                X,
-                                                "a point of the sheet");
+    Point<dim> X;
+    X[0] = s;
+    X[1] = y;
+    if (dim == 3)
+      X[dim - 1] = z;
+    const Tensor<1, dim> u =
+      Common::Physics::displacement_at(mapping,
+                                       dof_handler,
+                                       contact_problem->displacement(),
+                                       X,
+                                       "a point of the sheet");
+    return Point<2>(s + u[0], y + u[1]);
   }
 
 
 
+  template <int dim>
   FlangeAngles
-  FormingProblem::flange_angles() const
+  FormingProblem<dim>::flange_angles(const double z) const
   {
     const auto  &g     = parameters.geometry;
     const double L     = g.sheet_half_length;
     const double mid   = 0.5 * g.thickness;
-    const auto   end   = deformed_point(L, mid);
-    const auto   angle = [&](const Point<dim> &start) {
-      const Tensor<1, dim> d = end - start;
+    const auto   end   = deformed_point(L, mid, z);
+    const auto   angle = [&](const Point<2> &start) {
+      const Tensor<1, 2> d = end - start;
       return std::atan2(std::abs(d[0]), d[1]) * 180. / numbers::PI;
     };
     FlangeAngles result;
-    result.chord = angle(deformed_point(parameters.release.chord_start, mid));
+    result.chord =
+      angle(deformed_point(parameters.release.chord_start, mid, z));
     result.end_tangent =
-      angle(deformed_point(L - parameters.release.end_tangent_length, mid));
+      angle(deformed_point(L - parameters.release.end_tangent_length, mid, z));
     return result;
   }
 
 
 
+  template <int dim>
   void
-  FormingProblem::postprocess_step(
+  FormingProblem<dim>::postprocess_step(
     const Common::Solvers::StepInfo         &step,
     const Common::Solvers::NewtonStatistics &statistics)
   {
@@ -310,7 +374,7 @@ namespace SheetForming
       geometry.tool_loads(contact_problem->enforcement().state(),
                           dof_handler.locally_owned_dofs(),
                           mpi_communicator);
-    const double full = 2. * parameters.geometry.width;
+    const double full = full_strip_factor();
     ForceRecord  record;
     record.time               = step.state.time;
     record.punch_displacement = step.state.value("Punch displacement");
@@ -354,8 +418,10 @@ namespace SheetForming
       {
         formed         = true;
         forming_angles = angles;
-        stroke         = record.punch_displacement;
-        formed_shape   = capture_shape();
+        if (dim == 3)
+          forming_angles_edge = flange_angles(0.5 * parameters.geometry.width);
+        stroke       = record.punch_displacement;
+        formed_shape = capture_shape();
         contact_problem->hold_dofs({hold_dof});
         held = true;
         console.stream() << "  Forming ends: the sheet's axis node at "
@@ -364,4 +430,9 @@ namespace SheetForming
       }
     Common::Problems::warn_if_search_edge_reached(console, *contact_problem);
   }
+
+
+
+  template class FormingProblem<2>;
+  template class FormingProblem<3>;
 } // namespace SheetForming

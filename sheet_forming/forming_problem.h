@@ -40,6 +40,11 @@ namespace SheetForming
     constexpr types::boundary_id surface = 2;
     /** x = L/2, the free end. */
     constexpr types::boundary_id end = 3;
+    /** z = 0 of the 3D strip, the symmetry plane across the width:
+     * u_z = 0. */
+    constexpr types::boundary_id width_symmetry = 4;
+    /** z = W/2 of the 3D strip, its free edge. */
+    constexpr types::boundary_id edge = 5;
   } // namespace BoundaryIds
 
   /** The tool loads and the punch stroke at one accepted step. */
@@ -70,7 +75,8 @@ namespace SheetForming
     double end_tangent;
   };
 
-  /** The strip and the tools at one state, for the output files. */
+  /** The strip and the tools at one state, for the output files; in 3D
+   * on the plane z = 0, the strip's middle. */
   struct StripShape
   {
     /** Reference arc length s of each sample (mm). */
@@ -79,23 +85,38 @@ namespace SheetForming
     std::vector<std::array<Point<2>, 3>> points;
     /** Downward displacements of punch and die (mm). */
     double punch_displacement = 0., die_displacement = 0.;
-    /** Contact results of the top and bottom faces, by s. */
+    /** Contact results of the top and bottom faces, by s (2D: the x and
+     * y components of the 3D vectors). */
     std::vector<Common::Contact::ContactPointResult<2>> top, bottom;
   };
 
   /**
    * @brief The forming problem: the sheet (secondary surface: its top and
    * bottom faces) against the rigid punch and die (analytic profiles, the
-   * primary side), contact in the current configuration.
+   * primary side), contact in the current configuration. In plane strain
+   * (dim = 2) or as a 3D strip (dim = 3: a quarter model with its edge
+   * free, the tools extruded along z), whose angles are measured on the
+   * symmetry plane z = 0 and at the edge.
    */
-  class FormingProblem : public Common::Problems::ContactApplication<2>
+  template <int dim>
+  class FormingProblem : public Common::Problems::ContactApplication<dim>
   {
   public:
     explicit FormingProblem(const Parameters &parameters);
 
   private:
-    static constexpr int dim = 2;
-    using Base               = Common::Problems::ContactApplication<dim>;
+    using Base = Common::Problems::ContactApplication<dim>;
+    using Base::console;
+    using Base::constraints_dirichlet_and_hanging_nodes;
+    using Base::contact_geometry;
+    using Base::contact_problem;
+    using Base::dof_handler;
+    using Base::fe;
+    using Base::mapping;
+    using Base::mpi_communicator;
+    using Base::triangulation;
+    using Base::write_plots;
+    using Base::write_summary;
 
     std::string
     title() const override;
@@ -119,14 +140,22 @@ namespace SheetForming
     std::vector<Common::Contact::RigidTool<dim>>
     make_tools() const;
 
-    /** The deformed position of the material point at reference arc
-     * length @p s and height @p y of the sheet (mm). */
-    Point<dim>
-    deformed_point(const double s, const double y) const;
+    /** The deformed position (x, y) of the material point at reference
+     * arc length @p s, height @p y and, in 3D, @p z across the width
+     * (mm). */
+    Point<2>
+    deformed_point(const double s, const double y, const double z = 0.) const;
 
-    /** The flange angles now. */
+    /** The flange angles now, on the plane z = @p z (3D; the middle of the
+     * strip by default). */
     FlangeAngles
-    flange_angles() const;
+    flange_angles(const double z = 0.) const;
+
+    /** The factor from the model's forces to the full strip's: 2 halves
+     * times the width in plane strain (forces per mm of depth), 4 quarters
+     * in 3D. */
+    double
+    full_strip_factor() const;
 
     /** The strip's outline and mid-surface, the tools' positions and the
      * contact state now. */
@@ -150,6 +179,8 @@ namespace SheetForming
     /** The angles and the shape at the end of forming, if reached. */
     bool         formed = false;
     FlangeAngles forming_angles;
+    /** In 3D the same at the strip's free edge z = W/2. */
+    FlangeAngles forming_angles_edge;
     StripShape   formed_shape;
     /** Punch stroke at the end of forming (mm). */
     double stroke = 0.;

@@ -81,8 +81,9 @@ namespace SheetForming
   // The strip's outline and mid-surface at the nodes along its length,
   // the tools' positions, and the contact state of the top (punch side)
   // and bottom (die side) faces.
+  template <int dim>
   StripShape
-  FormingProblem::capture_shape() const
+  FormingProblem<dim>::capture_shape() const
   {
     const auto        &g = parameters.geometry;
     const unsigned int n =
@@ -98,12 +99,15 @@ namespace SheetForming
       }
     shape.punch_displacement = forces.back().punch_displacement;
     shape.die_displacement   = forces.back().die_displacement;
-    for (const auto &p :
-         Common::Contact::contact_profile(contact_problem->coupling(),
-                                          contact_problem->enforcement(),
-                                          contact_problem->displacement(),
-                                          contact_problem->bulk_residual(),
-                                          0))
+    // In 3D the section z = 0, the strip's middle.
+    for (const auto &p : Common::Contact::plane_section(
+           Common::Contact::contact_profile(contact_problem->coupling(),
+                                            contact_problem->enforcement(),
+                                            contact_problem->displacement(),
+                                            contact_problem->bulk_residual(),
+                                            0),
+           0.,
+           g.thickness))
       (p.position[1] > 0.5 * g.thickness ? shape.top : shape.bottom)
         .push_back(p);
     return shape;
@@ -111,8 +115,10 @@ namespace SheetForming
 
 
 
+  template <int dim>
   void
-  FormingProblem::write_shape(const StripShape &shape, const std::string &tag)
+  FormingProblem<dim>::write_shape(const StripShape  &shape,
+                                   const std::string &tag)
   {
     const auto &g   = parameters.geometry;
     const auto &out = parameters.output;
@@ -225,8 +231,9 @@ namespace SheetForming
 
 
 
+  template <int dim>
   void
-  FormingProblem::output_results(
+  FormingProblem<dim>::output_results(
     const Common::Solvers::LoadSteppingStatistics &stepping)
   {
     const auto &out  = parameters.output;
@@ -236,12 +243,15 @@ namespace SheetForming
                 ExcMessage("The load program ended before the release "
                            "stage."));
     const FlangeAngles final_angles = flange_angles();
-    const StripShape   final_shape  = capture_shape();
+    const FlangeAngles final_angles_edge =
+      dim == 3 ? flange_angles(0.5 * parameters.geometry.width) : final_angles;
+    const StripShape final_shape = capture_shape();
     if (!released)
       {
-        forming_angles = final_angles;
-        stroke         = forces.back().punch_displacement;
-        formed_shape   = final_shape;
+        forming_angles      = final_angles;
+        forming_angles_edge = final_angles_edge;
+        stroke              = forces.back().punch_displacement;
+        formed_shape        = final_shape;
       }
     if (root)
       {
@@ -296,6 +306,10 @@ namespace SheetForming
     console.print_quantity("Forming angle (chord)",
                            "deg",
                            forming_angles.chord);
+    if (dim == 3)
+      console.print_quantity("Forming angle at the edge (chord)",
+                             "deg",
+                             forming_angles_edge.chord);
     console.print_quantity("Straight-span angle of the tools",
                            "deg",
                            parameters.geometry.straight_span_angle(stroke));
@@ -307,6 +321,10 @@ namespace SheetForming
         console.print_quantity("Springback",
                                "deg",
                                final_angles.chord - forming_angles.chord);
+        if (dim == 3)
+          console.print_quantity("Angle after release at the edge (chord)",
+                                 "deg",
+                                 final_angles_edge.chord);
         console.print_quantity("Closed contact nodes after release",
                                "",
                                n_closed);
@@ -318,7 +336,7 @@ namespace SheetForming
       Common::Problems::case_summary(parameters,
                                      parameters.mesh.element_degree,
                                      mpi_communicator);
-    case_description
+    case_description.set("dimension", dim == 2 ? "plane strain" : "3d strip")
       .set("n_cells_through_thickness", parameters.mesh.n_cells_thickness)
       .set("n_cells_along_length", parameters.mesh.n_cells_length)
       .set("sheet_law", material_description(parameters.sheet_material))
@@ -368,7 +386,34 @@ namespace SheetForming
     else
       reference.set("source", "none published for this friction coefficient");
 
+    if (dim == 3)
+      {
+        case_description.set("n_cells_across_half_width",
+                             parameters.mesh.n_cells_width);
+        // The strip's free edge: the anticlastic bending of the 3D strip
+        // makes its angles differ from the middle's.
+        results.set("forming_angle_edge_deg", forming_angles_edge.chord);
+        if (released)
+          results.set("angle_after_release_edge_deg", final_angles_edge.chord);
+      }
     write_summary(stepping,
                   {case_description, mesh, results, reference, ratios});
   }
+
+
+
+  template StripShape
+  FormingProblem<2>::capture_shape() const;
+  template StripShape
+  FormingProblem<3>::capture_shape() const;
+  template void
+  FormingProblem<2>::write_shape(const StripShape &, const std::string &);
+  template void
+  FormingProblem<3>::write_shape(const StripShape &, const std::string &);
+  template void
+  FormingProblem<2>::output_results(
+    const Common::Solvers::LoadSteppingStatistics &);
+  template void
+  FormingProblem<3>::output_results(
+    const Common::Solvers::LoadSteppingStatistics &);
 } // namespace SheetForming

@@ -16,10 +16,13 @@ main(int argc, char *argv[])
     argv,
     "sheet_forming",
     "FENET benchmark 3, aluminium strip bent by a rigid punch into a rigid "
-    "die and released (plane strain half model)",
+    "die and released (plane strain half model or 3D strip)",
     &SheetForming::Parameters::declare_parameters,
     [](const std::string &parameter_file) {
       const SheetForming::Parameters parameters(parameter_file);
-      SheetForming::FormingProblem(parameters).run();
+      if (parameters.geometry.three_d)
+        SheetForming::FormingProblem<3>(parameters).run();
+      else
+        SheetForming::FormingProblem<2>(parameters).run();
     });
 }

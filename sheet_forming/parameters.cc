@@ -74,7 +74,17 @@ namespace SheetForming
                         "Width of the full strip, the depth of the plane "
                         "strain model: forces are reported for the full "
                         "strip, 2 x width x the force per unit depth of the "
-                        "half model. Units: mm.");
+                        "half model; in 3D the strip's width. Units: mm.");
+      prm.declare_entry(
+        "Dimension",
+        "plane strain",
+        Patterns::Selection("plane strain|3d strip"),
+        "The model: 'plane strain' (the x-y section of the half model, the "
+        "benchmark's) or '3d strip' (the strip as a 3D body, a quarter "
+        "model 0 <= z <= W/2 with the symmetry plane z = 0 and its edge "
+        "z = W/2 free, against the tools extruded along z; they are wider "
+        "than the strip). Angles are measured on the plane z = 0, forces "
+        "are for the full strip.");
     }
     prm.leave_subsection();
   }
@@ -95,6 +105,7 @@ namespace SheetForming
         Common::IO::get_positive_length(prm, s, "Sheet half-length");
       thickness = Common::IO::get_positive_length(prm, s, "Sheet thickness");
       width     = Common::IO::get_positive_length(prm, s, "Sheet width");
+      three_d   = (prm.get("Dimension") == "3d strip");
     }
     prm.leave_subsection();
     AssertThrow(die_radius >= punch_radius + thickness,
@@ -128,6 +139,11 @@ namespace SheetForming
                         "120",
                         Patterns::Integer(4, 4000),
                         "Cells along the sheet's half-length (uniform).");
+      prm.declare_entry("Number of cells across the half-width",
+                        "4",
+                        Patterns::Integer(1, 200),
+                        "Cells across the half-width W/2 of the 3D strip "
+                        "(uniform); ignored in plane strain.");
       prm.declare_entry(
         "Interior node perturbation",
         "0",
@@ -143,7 +159,7 @@ namespace SheetForming
 
 
   void
-  MeshParameters::parse_parameters(ParameterHandler &prm)
+  MeshParameters::parse_parameters(ParameterHandler &prm, const bool three_d)
   {
     prm.enter_subsection("Mesh");
     {
@@ -152,8 +168,22 @@ namespace SheetForming
         prm.get_integer("Number of cells through the thickness");
       n_cells_length = prm.get_integer("Number of cells along the length");
       interior_perturbation = prm.get_double("Interior node perturbation");
+      n_cells_width =
+        three_d ? prm.get_integer("Number of cells across the half-width") : 1;
     }
     prm.leave_subsection();
+    // Refused before the mesh is built: a direct solver on a workstation
+    // takes some 1e5 2D or 3e4 3D Q2 cells.
+    const unsigned long max_cells = three_d ? 30000 : 128000;
+    const unsigned long n_cells   = static_cast<unsigned long>(n_cells_length) *
+                                  n_cells_thickness * n_cells_width;
+    AssertThrow(n_cells <= max_cells,
+                ExcMessage("Mesh: 'Number of cells along the length' times "
+                           "'Number of cells through the thickness' (and "
+                           "across the half-width in 3D) would make a mesh "
+                           "of " +
+                           std::to_string(n_cells) + " cells, more than " +
+                           std::to_string(max_cells) + "."));
   }
 
 
@@ -262,7 +292,7 @@ namespace SheetForming
     prm.parse_input(filename);
 
     geometry.parse_parameters(prm);
-    mesh.parse_parameters(prm);
+    mesh.parse_parameters(prm, geometry.three_d);
     Common::Problems::ContactRunParameters::parse_parameters(prm,
                                                              load_channels());
     release.parse_parameters(prm,

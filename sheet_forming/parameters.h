@@ -42,6 +42,10 @@ namespace SheetForming
     double thickness;
     /** Width of the full strip, the plane-strain depth (mm). */
     double width;
+    /** True for the 3D model of the strip: a quarter model, 0 <= z <= W/2
+     * with the symmetry plane z = 0 and the free edge z = W/2; false for
+     * plane strain. */
+    bool three_d;
 
     /** x of the shoulder fillet's centre, R2 + R3 (mm); its y is -R3, the
      * cavity's centre is (0, -R3). */
@@ -65,14 +69,18 @@ namespace SheetForming
   {
     static void
     declare_parameters(ParameterHandler &prm);
+    /** Read and check the size of the mesh (its cells across the width
+     * count only if @p three_d). */
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const bool three_d);
 
     /** Degree of the Lagrange element (1 or 2). */
     unsigned int element_degree;
-    /** Cells through the thickness and along the half-length. */
+    /** Cells through the thickness, along the half-length and, in 3D,
+     * across the half-width. */
     unsigned int n_cells_thickness;
     unsigned int n_cells_length;
+    unsigned int n_cells_width;
     /** Largest random shift of the sheet's interior vertices, as a
      * fraction of the shortest edge at each (0 to 0.3, dimensionless). */
     double interior_perturbation;

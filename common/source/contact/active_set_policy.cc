@@ -109,40 +109,56 @@ namespace Common
 
       if (initial_active_set == InitialActiveSet::nearest_per_body)
         {
-          // Each rank's nearest owned node per body, then the nearest over
-          // the ranks (the first node on ties, as in serial).
-          std::map<types::global_dof_index, std::pair<double, unsigned int>>
-            best;
+          // Each rank's nearest owned node per body (its gap, index and
+          // position), then the nearest over the ranks (the first node on
+          // ties, as in serial).
+          using Candidate =
+            std::pair<std::pair<double, unsigned int>, Point<dim>>;
+          std::map<types::global_dof_index, Candidate> best;
           for (unsigned int j = 0; j < n; ++j)
             {
               if (!rows.is_owned(j) || !nodes[j].paired ||
                   nodes[j].weight <= 0.)
                 continue;
               const auto it = best.find(nodes[j].partner);
-              if (it == best.end() || nodes[j].nodal_gap < it->second.first)
-                best[nodes[j].partner] = {nodes[j].nodal_gap, j};
+              if (it == best.end() ||
+                  nodes[j].nodal_gap < it->second.first.first)
+                best[nodes[j].partner] = {{nodes[j].nodal_gap, j},
+                                          nodes[j].position};
             }
           if (rows.is_distributed())
             {
-              std::map<types::global_dof_index, std::pair<double, unsigned int>>
-                merged;
+              std::map<types::global_dof_index, Candidate> merged;
               for (const auto &part :
                    Utilities::MPI::all_gather(rows.communicator(), best))
                 for (const auto &[body, candidate] : part)
                   {
                     const auto it = merged.find(body);
                     if (it == merged.end() ||
-                        candidate.first < it->second.first ||
-                        (candidate.first == it->second.first &&
-                         candidate.second < it->second.second))
+                        candidate.first < it->second.first)
                       merged[body] = candidate;
                   }
               best = merged;
             }
+          // In 3D also the nodes of that node's line along z: the line of
+          // first contact of a body extruded along z.
           std::fill(status.begin(), status.end(), PointStatus::open);
-          for (const auto &[body, candidate] : best)
-            if (rows.is_held(candidate.second))
-              status[candidate.second] = friction.status_on_contact();
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              if (!rows.is_held(j) || !nodes[j].paired || nodes[j].weight <= 0.)
+                continue;
+              const auto it = best.find(nodes[j].partner);
+              if (it == best.end())
+                continue;
+              const Point<dim> &x       = it->second.second;
+              const bool        on_line = dim == 3 &&
+                                   std::abs(nodes[j].position[0] - x[0]) <=
+                                     1e-8 * nodes[j].mesh_size &&
+                                   std::abs(nodes[j].position[1] - x[1]) <=
+                                     1e-8 * nodes[j].mesh_size;
+              if (j == it->second.first.second || on_line)
+                status[j] = friction.status_on_contact();
+            }
         }
       state.reset(status);
     }

@@ -97,10 +97,12 @@ namespace Common
           "first iteration on. nearest per body: only the paired node "
           "nearest to each primary body (each rigid tool, or the meshed "
           "primary surface; the first node in the surface's order on "
-          "ties), for a body that rests on a flat tool and lifts off under "
-          "load, where closing the whole touching zone would make the "
-          "semismooth Newton method release it one node per iteration. "
-          "Affects the iteration path only.");
+          "ties), and in 3D the nodes of its line along z (the line of "
+          "first contact of bodies extruded along z), for a body that "
+          "rests on a flat tool and lifts off under load, where closing the "
+          "whole touching zone would make the semismooth Newton method "
+          "release it one node per iteration. Affects the iteration path "
+          "only.");
         prm.declare_entry(
           "Rigid tool gap",
           "mortar",

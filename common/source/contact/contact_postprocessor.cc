@@ -333,6 +333,51 @@ namespace Common
         }
     }
 
+    template <int dim>
+    std::vector<ContactPointResult<2>>
+    plane_section(const std::vector<ContactPointResult<dim>> &profile,
+                  const double                                z,
+                  const double                                length_scale)
+    {
+      const auto in_plane = [](const Tensor<1, dim> &v) {
+        return Tensor<1, 2>({v[0], v[1]});
+      };
+      std::vector<ContactPointResult<2>> section;
+      for (const auto &p : profile)
+        if (dim == 2 ||
+            std::abs(p.position[dim - 1] - z) <= 1e-8 * length_scale)
+          {
+            ContactPointResult<2> q;
+            q.node     = p.node;
+            q.position = Point<2>(p.position[0], p.position[1]);
+            q.pressure = p.pressure;
+            q.normal   = in_plane(p.normal);
+            q.tangential_traction_vector =
+              in_plane(p.tangential_traction_vector);
+            q.slip_vector = in_plane(p.slip_vector);
+            q.relative_displacement_vector =
+              in_plane(p.relative_displacement_vector);
+            q.gap                   = p.gap;
+            q.status                = p.status;
+            q.tangential_traction   = p.tangential_traction;
+            q.slip                  = p.slip;
+            q.relative_displacement = p.relative_displacement;
+            if (dim == 3)
+              {
+                Tensor<1, 2> t({q.normal[1], -q.normal[0]});
+                if (t.norm() > 0.)
+                  t /= t.norm();
+                q.tangential_traction   = q.tangential_traction_vector * t;
+                q.slip                  = q.slip_vector * t;
+                q.relative_displacement = q.relative_displacement_vector * t;
+              }
+            section.push_back(q);
+          }
+      return section;
+    }
+
+
+
 #define INSTANTIATE(dim)                                                       \
   template Tensor<1, dim> tangent_of(const Tensor<1, dim> &);                  \
   template std::vector<                                                        \
@@ -357,6 +402,10 @@ namespace Common
     const ContactEnforcement<dim> &,                                           \
     const std::function<double(const Point<dim> &)> &,                         \
     double &);                                                                 \
+  template std::vector<ContactPointResult<2>> plane_section(                   \
+    const std::vector<ContactPointResult<dim>> &,                              \
+    const double,                                                              \
+    const double);                                                             \
   template void write_profile_csv(                                             \
     const std::string &,                                                       \
     const std::vector<ContactPointResult<dim>> &,                              \

@@ -77,7 +77,8 @@ namespace Common
        * "Initial active set = nearest per body" only the paired node of
        * positive weight nearest to each primary body closes
        * (NodeKinematics::partner; the first in the surface's order on
-       * ties). Resets
+       * ties), and in 3D the nodes of positive weight on its line along z
+       * (same x and y to 1e-8 of their faces). Resets
        * @p state (ContactState::reset()); sets the nodes this rank holds
        * (collective).
        */

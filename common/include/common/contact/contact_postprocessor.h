@@ -158,6 +158,21 @@ namespace Common
       double                                                  &reference_norm);
 
     /**
+     * @brief The section of a profile of a body extruded along z by the
+     * plane z = @p z (dim = 3) as a plane-strain profile: the points there
+     * (within 1e-8 of @p length_scale) with the x and y components of their
+     * positions and vectors, and tangential_traction, slip and
+     * relative_displacement the components of their vectors along
+     * (n_y, -n_x, 0) normalised, the in-plane tangent that tangent_of()
+     * gives in 2D. In 2D the profile unchanged.
+     */
+    template <int dim>
+    std::vector<ContactPointResult<2>>
+    plane_section(const std::vector<ContactPointResult<dim>> &profile,
+                  const double                                z,
+                  const double                                length_scale);
+
+    /**
      * @brief Write the profile as CSV with the header
      * `x,pressure,tangential_traction,slip,relative_displacement,gap,status`,
      * where x is the coordinate @p axis (mm; MPa; MPa; mm; mm; mm).
