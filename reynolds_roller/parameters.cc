@@ -50,6 +50,22 @@ namespace ReynoldsRoller
                         Patterns::Double(),
                         "Width W of the 3D extrusion, z from 0 to W; "
                         "ignored in plane strain. Units: mm.");
+      prm.declare_entry(
+        "Roller",
+        "rigid",
+        Patterns::Selection("rigid|elastic"),
+        "The steel roller: 'rigid' (an analytic circle turned about its "
+        "axis, the spec's allowed replacement: E_steel / E_rubber = 21000) "
+        "or 'elastic' (a meshed ring of 'Roller material', outer radius R, "
+        "whose hub of radius 'Roller hub radius' is turned rigidly about "
+        "the axis; plane strain only).");
+      prm.declare_entry("Roller hub radius",
+                        "15",
+                        Patterns::Double(),
+                        "Radius of the elastic roller's hub, the inner "
+                        "boundary of the ring, whose nodes are turned "
+                        "rigidly by the channel 'Roller angle'; below the "
+                        "roller radius. Units: mm.");
     }
     prm.leave_subsection();
   }
@@ -74,8 +90,16 @@ namespace ReynoldsRoller
       thickness = Common::IO::get_positive_length(prm, s, "Strip thickness");
       three_d   = (prm.get("Dimension") == "3d extrusion");
       width     = Common::IO::get_positive_length(prm, s, "Width");
+      elastic_roller = (prm.get("Roller") == "elastic");
+      hub_radius = Common::IO::get_positive_length(prm, s, "Roller hub radius");
     }
     prm.leave_subsection();
+    AssertThrow(!elastic_roller || hub_radius < roller_radius,
+                ExcMessage("Geometry: 'Roller hub radius' must be below "
+                           "'Roller radius'."));
+    AssertThrow(!elastic_roller || !three_d,
+                ExcMessage("Geometry: 'Roller = elastic' is a plane-strain "
+                           "model; the 3D extrusion has the rigid roller."));
     AssertThrow(length_behind > roller_radius && length_ahead > roller_radius,
                 ExcMessage("Geometry: 'Strip length behind the roller' and "
                            "'Strip length ahead of the roller' must exceed "
@@ -111,6 +135,19 @@ namespace ReynoldsRoller
                         Patterns::Integer(1, 200),
                         "Cells across the width W of the 3D extrusion "
                         "(uniform); ignored in plane strain.");
+      prm.declare_entry("Number of cells around the roller",
+                        "48",
+                        Patterns::Integer(8, 2000),
+                        "Cells around the elastic roller's ring (uniform; "
+                        "48 makes faces of 3.9 mm on R = 30, as long as the "
+                        "strip's cells of the production mesh); ignored for "
+                        "the rigid roller.");
+      prm.declare_entry("Number of cells across the ring",
+                        "2",
+                        Patterns::Integer(1, 100),
+                        "Cells across the elastic roller's ring, from the "
+                        "hub to the rim (uniform); ignored for the rigid "
+                        "roller.");
     }
     prm.leave_subsection();
   }
@@ -126,6 +163,9 @@ namespace ReynoldsRoller
       n_cells_length = prm.get_integer("Number of cells along the length");
       n_cells_thickness =
         prm.get_integer("Number of cells through the thickness");
+      n_cells_around_roller =
+        prm.get_integer("Number of cells around the roller");
+      n_cells_across_ring = prm.get_integer("Number of cells across the ring");
       n_cells_width =
         three_d ? prm.get_integer("Number of cells across the width") : 1;
     }
@@ -219,6 +259,9 @@ namespace ReynoldsRoller
     Common::Materials::SolidMaterialParameters::declare_parameters(
       prm,
       "Rubber material");
+    Common::Materials::SolidMaterialParameters::declare_parameters(
+      prm,
+      "Roller material");
     Common::Problems::ContactRunParameters::declare_parameters(
       prm,
       load_channels(),
@@ -277,6 +320,9 @@ namespace ReynoldsRoller
       }
     rubber_material.parse_parameters(prm,
                                      "Rubber material",
+                                     solid.finite_strain());
+    roller_material.parse_parameters(prm,
+                                     "Roller material",
                                      solid.finite_strain());
   }
 } // namespace ReynoldsRoller

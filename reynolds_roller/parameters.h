@@ -45,6 +45,12 @@ namespace ReynoldsRoller
     /** Width W of the 3D extrusion, z from 0 to W (mm); forces are still
      * reported per mm of depth. */
     double width;
+    /** True for the elastic steel roller (a meshed ring turned by its
+     * hub), false for the rigid one (an analytic circle). */
+    bool elastic_roller;
+    /** Radius of the elastic roller's hub, the inner boundary of the ring
+     * that turns rigidly (mm). */
+    double hub_radius;
   };
 
   /** Subsection "Mesh". */
@@ -62,6 +68,8 @@ namespace ReynoldsRoller
     /** Cells along the strip, through its thickness and, in 3D, across
      * its width (uniform). */
     unsigned int n_cells_length, n_cells_thickness, n_cells_width;
+    /** Cells of the elastic roller's ring around it and across it. */
+    unsigned int n_cells_around_roller, n_cells_across_ring;
   };
 
   /** Subsection "Supports": the strip's bottom. */
@@ -100,6 +108,9 @@ namespace ReynoldsRoller
     MeshParameters                             mesh;
     SupportParameters                          supports;
     Common::Materials::SolidMaterialParameters rubber_material;
+    /** The elastic roller's steel (read, and used only with 'Roller =
+     * elastic'). */
+    Common::Materials::SolidMaterialParameters roller_material;
   };
 } // namespace ReynoldsRoller
 

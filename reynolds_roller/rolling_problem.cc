@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace ReynoldsRoller
 {
@@ -31,8 +32,9 @@ namespace ReynoldsRoller
   std::string
   RollingProblem<dim>::title() const
   {
-    return std::string("reynolds_roller: rigid steel roller pressed into a "
-                       "rubber strip and turned (") +
+    return std::string("reynolds_roller: ") +
+           (parameters.geometry.elastic_roller ? "elastic" : "rigid") +
+           " steel roller pressed into a rubber strip and turned (" +
            (dim == 2 ? "plane strain" : "3D extrusion, u_z = 0 on its faces") +
            ")";
   }
@@ -144,11 +146,52 @@ namespace ReynoldsRoller
                                                  BoundaryIds::ends);
             }
       }
-    // Behind the strip's left end, clear of the roller.
-    GridGenerator::hyper_rectangle(carrier, carrier_lower, carrier_upper);
-    for (const auto &cell : carrier.active_cell_iterators())
-      cell->set_material_id(MaterialIds::roller_carrier);
+    if (g.elastic_roller)
+      {
+        // The ring from the hub to the rim about the axis (concentric
+        // shells, evenly spaced: the skewness is near zero), its cells on
+        // a spherical manifold.
+        if constexpr (dim == 2)
+          GridGenerator::concentric_hyper_shells(carrier,
+                                                 roller_centre(),
+                                                 g.hub_radius,
+                                                 g.roller_radius,
+                                                 m.n_cells_across_ring,
+                                                 1e-3,
+                                                 m.n_cells_around_roller,
+                                                 false);
+        for (const auto &cell : carrier.active_cell_iterators())
+          {
+            cell->set_material_id(MaterialIds::roller);
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary())
+                face->set_boundary_id(face->center().distance(roller_centre()) <
+                                          0.5 *
+                                            (g.hub_radius + g.roller_radius) ?
+                                        BoundaryIds::roller_hub :
+                                        BoundaryIds::roller_rim);
+          }
+      }
+    else
+      {
+        // Behind the strip's left end, clear of the roller.
+        GridGenerator::hyper_rectangle(carrier, carrier_lower, carrier_upper);
+        for (const auto &cell : carrier.active_cell_iterators())
+          cell->set_material_id(MaterialIds::roller_carrier);
+      }
     Common::Geometry::join_bodies<dim>({&strip, &carrier}, triangulation);
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  RollingProblem<dim>::roller_centre() const
+  {
+    Point<dim> centre;
+    centre[1] =
+      0.5 * parameters.geometry.thickness + parameters.geometry.roller_radius;
+    return centre;
   }
 
 
@@ -197,16 +240,49 @@ namespace ReynoldsRoller
       zero_components = {{1, {BoundaryIds::bottom}}};
     if (dim == 3)
       zero_components.push_back({dim - 1, {BoundaryIds::sides}});
+    // The elastic roller's hub is turned rigidly: every DoF of its nodes
+    // is prescribed.
+    std::vector<types::boundary_id> clamped;
+    if (parameters.geometry.elastic_roller)
+      clamped.push_back(BoundaryIds::roller_hub);
     Common::Physics::make_homogeneous_constraints<dim>(
       mapping,
       dof_handler,
-      {},
+      clamped,
       zero_components,
       constraints_dirichlet_and_hanging_nodes);
-    roller_carrier = Common::Physics::add_prescribed_translation_constraints(
-      dof_handler,
-      MaterialIds::roller_carrier,
-      constraints_dirichlet_and_hanging_nodes);
+    hub_dofs.clear();
+    if (parameters.geometry.elastic_roller)
+      {
+        const IndexSet hub =
+          DoFTools::extract_boundary_dofs(dof_handler,
+                                          fe.component_mask(
+                                            FEValuesExtractors::Vector(0)),
+                                          {BoundaryIds::roller_hub});
+        const auto                          &base = fe.base_element(0);
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        std::set<types::global_dof_index>    seen;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->material_id() == MaterialIds::roller && cell->at_boundary())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.system_to_base_index(i).first.first == 0 &&
+                    hub.is_element(dofs[i]) && seen.insert(dofs[i]).second)
+                  hub_dofs.push_back(
+                    {dofs[i],
+                     fe.system_to_component_index(i).first,
+                     mapping.transform_unit_to_real_cell(
+                       cell,
+                       base.get_unit_support_points()[fe.system_to_base_index(i)
+                                                        .second])});
+            }
+      }
+    else
+      roller_carrier = Common::Physics::add_prescribed_translation_constraints(
+        dof_handler,
+        MaterialIds::roller_carrier,
+        constraints_dirichlet_and_hanging_nodes);
     {
       const FEValuesExtractors::Scalar x(0), y(1);
       const IndexSet                   bottom_x =
@@ -227,21 +303,35 @@ namespace ReynoldsRoller
     }
 
     auto geometry =
-      std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
-        dof_handler,
-        mapping,
-        BoundaryIds::top,
-        std::vector<Common::Contact::RigidTool<dim>>{make_roller()},
-        parameters.contact.search_distance,
-        false);
-    geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
+      parameters.geometry.elastic_roller ?
+        std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+          dof_handler,
+          mapping,
+          BoundaryIds::top,
+          BoundaryIds::roller_rim,
+          parameters.contact.search_distance,
+          false) :
+        std::make_unique<Common::Contact::CurrentMortarGeometry<dim>>(
+          dof_handler,
+          mapping,
+          BoundaryIds::top,
+          std::vector<Common::Contact::RigidTool<dim>>{make_roller()},
+          parameters.contact.search_distance,
+          false);
+    if (!parameters.geometry.elastic_roller)
+      geometry->set_rigid_tool_gap(parameters.contact.rigid_tool_gap);
+    // The carrier cell of the rigid roller is prescribed throughout: any
+    // law does; the elastic roller is steel.
     this->setup_contact_problem(
       Common::Physics::create_solid_operator<dim>(
         parameters.solid,
         mapping,
         fe,
         {{MaterialIds::strip, parameters.rubber_material},
-         {MaterialIds::roller_carrier, parameters.rubber_material}}),
+         parameters.geometry.elastic_roller ?
+           std::make_pair(MaterialIds::roller, parameters.roller_material) :
+           std::make_pair(MaterialIds::roller_carrier,
+                          parameters.rubber_material)}),
       std::move(geometry),
       parameters.rubber_material.youngs_modulus);
 
@@ -285,9 +375,61 @@ namespace ReynoldsRoller
         const double indentation = state.value("Indentation");
         for (const auto dof : bottom_y_dofs)
           values[dof] = indentation;
-        roller_carrier.prescribe(Tensor<1, dim>(), values);
+        if (parameters.geometry.elastic_roller)
+          {
+            // u = (Q - I)(X - c), Q the clockwise turn by the channel.
+            const double theta =
+              -state.value("Roller angle") * numbers::PI / 180.;
+            const double     c = std::cos(theta), sn = std::sin(theta);
+            const Point<dim> centre = roller_centre();
+            for (const auto &hub : hub_dofs)
+              {
+                const Tensor<1, dim> r      = hub.position - centre;
+                const double         turned = hub.component == 0 ?
+                                                c * r[0] - sn * r[1] :
+                                                sn * r[0] + c * r[1];
+                values[hub.dof]             = turned - r[hub.component];
+              }
+          }
+        else
+          roller_carrier.prescribe(Tensor<1, dim>(), values);
       };
     return load;
+  }
+
+
+
+  // The hub's supports hold the roller against the strip's contact forces:
+  // those are the supports' reactions reversed, and so is their moment
+  // about the axis, taken where the hub nodes are now (turned rigidly).
+  template <int dim>
+  std::pair<Tensor<1, dim>, double>
+  RollingProblem<dim>::elastic_roller_loads(
+    const Common::Solvers::LoadState &state)
+  {
+    Common::Problems::ExternalLoad internal_only = external_load();
+    internal_only.add = [](const Common::Solvers::LoadState &,
+                           const AffineConstraints<double> &,
+                           TrilinosWrappers::MPI::Vector &) {
+    };
+    const TrilinosWrappers::MPI::Vector reactions =
+      contact_problem->nodal_reactions(state, internal_only);
+    const double     theta = -state.value("Roller angle") * numbers::PI / 180.;
+    const double     c = std::cos(theta), sn = std::sin(theta);
+    const Point<dim> centre = roller_centre();
+    Tensor<1, dim>   force;
+    double           moment = 0.;
+    for (const auto &hub : hub_dofs)
+      if (reactions.locally_owned_elements().is_element(hub.dof))
+        {
+          const Tensor<1, dim> r = hub.position - centre;
+          const double arm[2]    = {c * r[0] - sn * r[1], sn * r[0] + c * r[1]};
+          const double f         = -reactions(hub.dof);
+          force[hub.component] += f;
+          moment += hub.component == 0 ? -arm[1] * f : arm[0] * f;
+        }
+    return {Utilities::MPI::sum(force, mpi_communicator),
+            Utilities::MPI::sum(moment, mpi_communicator)};
   }
 
 
@@ -300,19 +442,28 @@ namespace ReynoldsRoller
   {
     Common::Problems::print_step(console, step, statistics, *contact_problem);
 
-    const auto &geometry =
-      static_cast<const Common::Contact::CurrentMortarGeometry<dim> &>(
-        *contact_geometry);
-    const auto loads =
-      geometry.tool_loads(contact_problem->enforcement().state(),
-                          dof_handler.locally_owned_dofs(),
-                          mpi_communicator);
     StepRecord record;
-    record.time          = step.state.time;
-    record.indentation   = step.state.value("Indentation");
-    record.angle         = step.state.value("Roller angle");
-    record.roller_force  = per_unit_depth(loads[0].force);
-    record.roller_moment = loads[0].moment[2] / depth();
+    record.time        = step.state.time;
+    record.indentation = step.state.value("Indentation");
+    record.angle       = step.state.value("Roller angle");
+    if (parameters.geometry.elastic_roller)
+      {
+        const auto [force, moment] = elastic_roller_loads(step.state);
+        record.roller_force        = per_unit_depth(force);
+        record.roller_moment       = moment / depth();
+      }
+    else
+      {
+        const auto &geometry =
+          static_cast<const Common::Contact::CurrentMortarGeometry<dim> &>(
+            *contact_geometry);
+        const auto loads =
+          geometry.tool_loads(contact_problem->enforcement().state(),
+                              dof_handler.locally_owned_dofs(),
+                              mpi_communicator);
+        record.roller_force  = per_unit_depth(loads[0].force);
+        record.roller_moment = loads[0].moment[2] / depth();
+      }
     // The whole force of the bottom on the strip: its supports' reactions
     // and the support force being released (the internal forces there).
     Common::Problems::ExternalLoad internal_only = external_load();

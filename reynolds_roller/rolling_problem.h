@@ -25,11 +25,13 @@ namespace ReynoldsRoller
 {
   using namespace dealii;
 
-  /** Material ids: the strip and the roller's carrier cell. */
+  /** Material ids: the strip, the rigid roller's carrier cell and the
+   * elastic roller. */
   namespace MaterialIds
   {
     constexpr types::material_id strip          = 1;
     constexpr types::material_id roller_carrier = 2;
+    constexpr types::material_id roller         = 3;
   } // namespace MaterialIds
 
   /** Boundary ids of the strip (in 3D also its z faces). */
@@ -43,6 +45,10 @@ namespace ReynoldsRoller
     constexpr types::boundary_id ends = 3;
     /** z = 0 and z = W of the 3D extrusion: u_z = 0. */
     constexpr types::boundary_id sides = 4;
+    /** The elastic roller's rim (the primary contact surface) and hub
+     * (turned rigidly). */
+    constexpr types::boundary_id roller_rim = 5;
+    constexpr types::boundary_id roller_hub = 6;
   } // namespace BoundaryIds
 
   /** The strip's corners: top left (point A), bottom left, top right,
@@ -124,6 +130,16 @@ namespace ReynoldsRoller
     Common::Contact::RigidTool<dim>
     make_roller() const;
 
+    /** The roller's axis (0, H/2 + R) (mm). */
+    Point<dim>
+    roller_centre() const;
+
+    /** The elastic roller's loads: the force of the strip on it and its
+     * moment about the axis (counterclockwise positive), from the
+     * reactions of its hub at @p state, in the current configuration. */
+    std::pair<Tensor<1, dim>, double>
+    elastic_roller_loads(const Common::Solvers::LoadState &state);
+
     /** Write contact_half_turn.csv and its plots: the contact zone at the
      * accepted step at @p angle (the first at or past half a turn). */
     void
@@ -146,6 +162,15 @@ namespace ReynoldsRoller
 
     const Parameters                           &parameters;
     Common::Physics::PrescribedTranslation<dim> roller_carrier;
+    /** The elastic roller's hub DoFs, each with its component and the
+     * reference position of its node: turned rigidly about the axis. */
+    struct HubDof
+    {
+      types::global_dof_index dof;
+      unsigned int            component;
+      Point<dim>              position;
+    };
+    std::vector<HubDof> hub_dofs;
     /** The y DoFs of the bottom (prescribed: the indentation) and its x
      * DoFs (held before the stage that frees them). */
     std::vector<types::global_dof_index> bottom_y_dofs, bottom_x_dofs;
