@@ -9,7 +9,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <map>
+#include <tuple>
 
 namespace Common
 {
@@ -21,7 +23,12 @@ namespace Common
     {
       /** Every polynomial of @p space at the unit cell point @p p, and
        * their gradients if @p gradients: the 1D factors of a tensor
-       * product space are evaluated once for all shape functions. */
+       * product space are evaluated once for all shape functions. The
+       * rows are integrated again and again at the same points (the
+       * quadrature points of the faces, for every Newton iterate and every
+       * difference quotient of contact_force_derivative()): the values and
+       * gradients are kept per space and point, in a cache of each thread
+       * that is emptied when it holds 20000 points. */
       template <int dim>
       void
       evaluate_all(const ScalarPolynomialsBase<dim> &space,
@@ -30,12 +37,42 @@ namespace Common
                    std::vector<Tensor<1, dim>>      &grads,
                    const bool                        gradients)
       {
-        thread_local std::vector<Tensor<2, dim>> no_hessians;
-        thread_local std::vector<Tensor<3, dim>> no_third;
-        thread_local std::vector<Tensor<4, dim>> no_fourth;
-        values.resize(space.n());
-        grads.resize(gradients ? space.n() : 0);
-        space.evaluate(p, values, grads, no_hessians, no_third, no_fourth);
+        using Key =
+          std::tuple<const void *, unsigned int, std::array<double, dim>>;
+        struct Entry
+        {
+          std::vector<double>         values;
+          std::vector<Tensor<1, dim>> grads;
+        };
+        thread_local std::map<Key, Entry> cache;
+        std::array<double, dim>           coordinates;
+        for (unsigned int d = 0; d < dim; ++d)
+          coordinates[d] = p[d];
+        const Key key{&space, space.n(), coordinates};
+        auto      it = cache.find(key);
+        if (it == cache.end())
+          {
+            if (cache.size() >= 20000)
+              cache.clear();
+            thread_local std::vector<Tensor<2, dim>> no_hessians;
+            thread_local std::vector<Tensor<3, dim>> no_third;
+            thread_local std::vector<Tensor<4, dim>> no_fourth;
+            Entry                                    entry;
+            entry.values.resize(space.n());
+            entry.grads.resize(space.n());
+            space.evaluate(p,
+                           entry.values,
+                           entry.grads,
+                           no_hessians,
+                           no_third,
+                           no_fourth);
+            it = cache.emplace(key, std::move(entry)).first;
+          }
+        values = it->second.values;
+        if (gradients)
+          grads = it->second.grads;
+        else
+          grads.clear();
       }
     } // namespace
 
