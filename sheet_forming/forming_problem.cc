@@ -62,6 +62,8 @@ namespace SheetForming
                                       "contact_" + tag + "_top",
                                       "contact_" + tag + "_bottom"})
         files.push_back(stem + ".csv");
+    // The contact plots of a state with no paired node (the released
+    // strip, the tools withdrawn) are not drawn.
     for (const std::string tag : {"formed", "released"})
       for (const std::string &stem : {"shape_" + tag,
                                       "contact_" + tag + "_pressure",

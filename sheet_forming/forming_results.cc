@@ -120,8 +120,9 @@ namespace SheetForming
   FormingProblem<dim>::write_shape(const StripShape  &shape,
                                    const std::string &tag)
   {
-    const auto &g   = parameters.geometry;
-    const auto &out = parameters.output;
+    const auto &g           = parameters.geometry;
+    const auto &out         = parameters.output;
+    const bool  has_contact = !shape.top.empty() || !shape.bottom.empty();
     {
       std::ofstream csv(out.path("strip_" + tag + ".csv"));
       csv << "s_mm,x_top_mm,y_top_mm,x_mid_mm,y_mid_mm,x_bottom_mm,"
@@ -206,25 +207,31 @@ namespace SheetForming
                         {tools_file, 3, 4, "die", "lines lw 1 lc 'gray40'"}};
         plots.emplace_back("shape_" + tag, shape);
 
-        const std::string top_file    = "contact_" + tag + "_top.csv";
-        const std::string bottom_file = "contact_" + tag + "_bottom.csv";
-        Common::IO::PlotDescription pressure;
-        pressure.title   = "Contact pressure along the strip (" + tag + ")";
-        pressure.x_label = "s, initial x [mm]";
-        pressure.y_label = "contact pressure [MPa]";
-        pressure.series  = {
-           {top_file, 1, 2, "top (punch)", "linespoints pt 7 ps 0.4"},
-           {bottom_file, 1, 2, "bottom (die)", "linespoints pt 5 ps 0.4"}};
-        plots.emplace_back("contact_" + tag + "_pressure", pressure);
+        // No contact profile plots of a state without paired nodes (the
+        // released strip, the tools withdrawn): the CSV files hold the
+        // header only.
+        if (has_contact)
+          {
+            const std::string top_file    = "contact_" + tag + "_top.csv";
+            const std::string bottom_file = "contact_" + tag + "_bottom.csv";
+            Common::IO::PlotDescription pressure;
+            pressure.title   = "Contact pressure along the strip (" + tag + ")";
+            pressure.x_label = "s, initial x [mm]";
+            pressure.y_label = "contact pressure [MPa]";
+            pressure.series  = {
+               {top_file, 1, 2, "top (punch)", "linespoints pt 7 ps 0.4"},
+               {bottom_file, 1, 2, "bottom (die)", "linespoints pt 5 ps 0.4"}};
+            plots.emplace_back("contact_" + tag + "_pressure", pressure);
 
-        Common::IO::PlotDescription slip;
-        slip.title   = "Slip accumulated in contact (" + tag + ")";
-        slip.x_label = "s, initial x [mm]";
-        slip.y_label = "slip, tool relative to sheet, along t [mm]";
-        slip.series  = {
-           {top_file, 1, 4, "top (punch)", "linespoints pt 7 ps 0.4"},
-           {bottom_file, 1, 4, "bottom (die)", "linespoints pt 5 ps 0.4"}};
-        plots.emplace_back("contact_" + tag + "_slip", slip);
+            Common::IO::PlotDescription slip;
+            slip.title   = "Slip accumulated in contact (" + tag + ")";
+            slip.x_label = "s, initial x [mm]";
+            slip.y_label = "slip, tool relative to sheet, along t [mm]";
+            slip.series  = {
+               {top_file, 1, 4, "top (punch)", "linespoints pt 7 ps 0.4"},
+               {bottom_file, 1, 4, "bottom (die)", "linespoints pt 5 ps 0.4"}};
+            plots.emplace_back("contact_" + tag + "_slip", slip);
+          }
         write_plots(plots);
       }
   }

@@ -57,19 +57,24 @@ namespace Common
         return false;
       const std::string command = "cd '" + dir.string() + "' && gnuplot '" +
                                   name + ".gp' >/dev/null 2>&1";
-      return std::system(command.c_str()) == 0;
+      if (std::system(command.c_str()) == 0)
+        return true;
+      std::error_code ignored;
+      std::filesystem::remove(dir / (name + ".png"), ignored);
+      return false;
     }
 
 
-    bool
+    std::vector<std::string>
     write_plots(
       const std::string                                          &directory,
       const std::vector<std::pair<std::string, PlotDescription>> &plots)
     {
-      bool complete = true;
+      std::vector<std::string> missing;
       for (const auto &[name, plot] : plots)
-        complete = write_plot(directory, name, plot) && complete;
-      return complete;
+        if (!write_plot(directory, name, plot))
+          missing.push_back(name);
+      return missing;
     }
   } // namespace IO
 } // namespace Common

@@ -59,10 +59,19 @@ namespace Common
     ContactApplication<dim>::write_plots(
       const std::vector<std::pair<std::string, IO::PlotDescription>> &plots)
     {
-      if (!IO::write_plots(run_parameters.output.directory, plots))
+      const auto missing =
+        IO::write_plots(run_parameters.output.directory, plots);
+      if (missing.empty())
+        return;
+      if (!IO::gnuplot_available())
         console.stream() << "  Note: gnuplot not available; plot scripts "
                             "written without PNG."
                          << std::endl;
+      else
+        for (const auto &name : missing)
+          console.stream() << "  Warning: gnuplot could not draw " << name
+                           << ".gp; its script is written, without PNG."
+                           << std::endl;
     }
 
 

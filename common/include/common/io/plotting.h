@@ -53,7 +53,8 @@ namespace Common
      * @brief Write `<directory>/<name>.gp` and run gnuplot to produce
      * `<directory>/<name>.png`.
      * @return true if the PNG was produced; false if gnuplot is missing or
-     * failed (the script is still written).
+     * failed (the script is still written, and a PNG gnuplot left behind
+     * is removed).
      */
     bool
     write_plot(const std::string     &directory,
@@ -66,9 +67,10 @@ namespace Common
 
     /**
      * @brief Write each named plot with write_plot() into @p directory.
-     * @return False if gnuplot is missing (scripts written, no PNG).
+     * @return The names of the plots without a PNG (all of them if gnuplot
+     * is missing; the scripts are written).
      */
-    bool
+    std::vector<std::string>
     write_plots(
       const std::string                                          &directory,
       const std::vector<std::pair<std::string, PlotDescription>> &plots);

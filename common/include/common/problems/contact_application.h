@@ -144,7 +144,8 @@ namespace Common
       /**
        * @brief Write @p plots into the output directory
        * (IO::write_plots()); if gnuplot is missing, say on the console that
-       * only the scripts were written. Call on rank 0.
+       * only the scripts were written, and name each plot gnuplot could
+       * not draw. Call on rank 0.
        */
       void
       write_plots(
