@@ -158,6 +158,17 @@ python3 scripts/forming_study.py --mus 01342 --degrees 2 --meshes "${forming_mes
   echo "== forming study: some runs failed or did not converge (see the table)"
 echo "== mesh study wall time: $((SECONDS - study_start)) s"
 
+study_start=$SECONDS
+echo "== model choices (benchmark 5)"
+# The production file with one change each: rotation increment, penalty
+# incompressibility, Q1 F-bar, the elastic roller (--quick: 60 x 3 cells, a
+# quarter turn).
+if $quick; then choice_flags=(--quick); else choice_flags=(); fi
+python3 scripts/rolling_choices.py "${choice_flags[@]}" \
+  --build "$root/build-release" --out "$results/studies/reynolds_roller" ||
+  echo "== model choices: some runs failed (see the table)"
+echo "== model choices wall time: $((SECONDS - study_start)) s"
+
 # Every judged check of the report compares a result with a reference that
 # holds for it, so a failed check (or a case without a result) is a
 # regression: the main job then exits non-zero, after the wall times.
