@@ -1,5 +1,6 @@
 #include "parameters.h"
 
+#include <common/geometry/two_body_meshes.h>
 #include <common/io/parameter_values.h>
 
 #include <cmath>
@@ -173,15 +174,14 @@ namespace ReynoldsRoller
     // Refused before the mesh is built: 1e5 Q2-P1 cells are some 8e5
     // DoFs in 2D, what a direct solver handles on a workstation; a 3D
     // cell has about three times the DoFs of a 2D one.
-    const unsigned long max_cells = three_d ? 30000 : 100000;
-    const unsigned long n_cells   = static_cast<unsigned long>(n_cells_length) *
+    const std::uint64_t max_cells = three_d ? 30000 : 100000;
+    const std::uint64_t n_cells   = static_cast<std::uint64_t>(n_cells_length) *
                                   n_cells_thickness * n_cells_width;
-    AssertThrow(n_cells <= max_cells,
-                ExcMessage("Mesh: 'Number of cells along the length' times "
-                           "'Number of cells through the thickness' (and "
-                           "across the width in 3D) would make a mesh of " +
-                           std::to_string(n_cells) + " cells, more than " +
-                           std::to_string(max_cells) + "."));
+    Common::Geometry::check_cell_count(
+      n_cells,
+      max_cells,
+      "'Number of cells along the length' times 'Number of cells through "
+      "the thickness' (and across the width in 3D)");
   }
 
 

@@ -1,5 +1,6 @@
 #include "parameters.h"
 
+#include <common/geometry/two_body_meshes.h>
 #include <common/io/parameter_values.h>
 
 #include <cmath>
@@ -174,16 +175,14 @@ namespace SheetForming
     prm.leave_subsection();
     // Refused before the mesh is built: a direct solver on a workstation
     // takes some 1e5 2D or 3e4 3D Q2 cells.
-    const unsigned long max_cells = three_d ? 30000 : 128000;
-    const unsigned long n_cells   = static_cast<unsigned long>(n_cells_length) *
+    const std::uint64_t max_cells = three_d ? 30000 : 128000;
+    const std::uint64_t n_cells   = static_cast<std::uint64_t>(n_cells_length) *
                                   n_cells_thickness * n_cells_width;
-    AssertThrow(n_cells <= max_cells,
-                ExcMessage("Mesh: 'Number of cells along the length' times "
-                           "'Number of cells through the thickness' (and "
-                           "across the half-width in 3D) would make a mesh "
-                           "of " +
-                           std::to_string(n_cells) + " cells, more than " +
-                           std::to_string(max_cells) + "."));
+    Common::Geometry::check_cell_count(
+      n_cells,
+      max_cells,
+      "'Number of cells along the length' times 'Number of cells through "
+      "the thickness' (and across the half-width in 3D)");
   }
 
 

@@ -184,6 +184,19 @@ namespace Common
 
 
 
+    void
+    check_cell_count(const std::uint64_t n_cells,
+                     const std::uint64_t max_cells,
+                     const std::string  &entries)
+    {
+      AssertThrow(n_cells <= max_cells,
+                  ExcMessage("Mesh: " + entries + " would make a mesh of " +
+                             std::to_string(n_cells) + " cells, more than " +
+                             std::to_string(max_cells) + "."));
+    }
+
+
+
     template <int dim>
     void
     refine_global_checked(Triangulation<dim> &tria,

@@ -47,6 +47,20 @@ namespace Common
     constexpr std::uint64_t max_active_cells = dim == 2 ? 1'000'000 : 500'000;
 
     /**
+     * @brief Refuse, before it is built, a structured mesh of @p n_cells
+     * cells beyond an application's @p max_cells (what a direct solver
+     * handles for its element).
+     * @param[in] entries The parameter entries whose product @p n_cells is,
+     * as the error message names them.
+     * @throws dealii::ExcMessage "Mesh: <entries> would make a mesh of
+     * <n_cells> cells, more than <max_cells>."
+     */
+    void
+    check_cell_count(const std::uint64_t n_cells,
+                     const std::uint64_t max_cells,
+                     const std::string  &entries);
+
+    /**
      * @brief Refine @p tria globally @p n_times, refusing a mesh of more
      * than max_active_cells cells before refining.
      * @param[in] entries The parameter entries that set the refinement, as
