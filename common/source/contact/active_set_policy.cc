@@ -172,9 +172,22 @@ namespace Common
       std::vector<NodeState<dim>> nodes(state.n_nodes());
       for (unsigned int j = 0; j < state.n_nodes(); ++j)
         nodes[j] = state.node(j);
+      const std::vector<int> current = codes(state, nodes);
+      // The sets of the earlier equilibria stay seen: each had a node on
+      // the wrong side, so none is the solution, and returning to one
+      // would repeat the cycle (A, B, A ...) that a penalty, whose
+      // complementarity residual vanishes, cannot otherwise detect.
       history.clear();
-      history.push_back(codes(state, nodes));
-      history_residual.assign(1, std::numeric_limits<double>::infinity());
+      for (const auto &set : equilibrium_sets)
+        if (set != current)
+          history.push_back(set);
+      history_residual.assign(history.size(), 0.);
+      history.push_back(current);
+      history_residual.push_back(std::numeric_limits<double>::infinity());
+      if (std::find(equilibrium_sets.begin(),
+                    equilibrium_sets.end(),
+                    current) == equilibrium_sets.end())
+        equilibrium_sets.push_back(current);
       cycling = false;
     }
 
@@ -184,7 +197,13 @@ namespace Common
     void
     ActiveSetPolicy<dim>::begin_step(const ContactState<dim> &state)
     {
-      restart_history(state);
+      std::vector<NodeState<dim>> nodes(state.n_nodes());
+      for (unsigned int j = 0; j < state.n_nodes(); ++j)
+        nodes[j] = state.node(j);
+      equilibrium_sets.clear();
+      history.assign(1, codes(state, nodes));
+      history_residual.assign(1, std::numeric_limits<double>::infinity());
+      cycling                  = false;
       last_update_extrapolated = false;
       extrapolation_enabled    = accelerate_release;
     }

@@ -102,7 +102,9 @@ namespace Common
           "The step test accepts an equilibrium residual (relative to the "
           "external load) up to this bound; above it a vanishing step means "
           "that the residual and the linearisation disagree, and the "
-          "iteration fails. Dimensionless.");
+          "iteration fails, unless the residual still falls by a factor of "
+          "ten per iteration (the small steps of a stiff system, such as a "
+          "stiff penalty), in which case it goes on. Dimensionless.");
       }
       prm.leave_subsection();
     }
@@ -278,7 +280,19 @@ namespace Common
                 {
                   // A vanishing step with a large residual means that the
                   // residual and the linearisation disagree: no round-off
-                  // explains it, and the state is not accepted.
+                  // explains it, and the state is not accepted. A residual
+                  // that still falls by a decade per iteration is no such
+                  // disagreement: a stiff system (a stiff penalty) makes
+                  // small steps; the iteration goes on.
+                  const std::size_t n_residuals = statistics.residuals.size();
+                  const bool        still_falling =
+                    n_residuals >= 2 &&
+                    residual.equilibrium <
+                      0.1 * statistics.residuals[n_residuals - 2].equilibrium;
+                  if (residual.equilibrium >
+                        parameters.step_test_residual_bound &&
+                      still_falling)
+                    continue;
                   if (residual.equilibrium >
                       parameters.step_test_residual_bound)
                     {

@@ -93,9 +93,11 @@ namespace Common
       begin_step(const ContactState<dim> &state);
 
       /** @brief Forget the active-set history used to detect cycling: the
-       * current set of @p state is the only one seen. For a Newton
-       * iteration that has held a cycling set until equilibrium, whose
-       * earlier sets were judged on states out of equilibrium. */
+       * current set of @p state and the sets of the step's earlier calls
+       * are the only ones seen. For a Newton iteration that has held a
+       * cycling set until equilibrium, whose intermediate sets were judged
+       * on states out of equilibrium; the sets of earlier equilibria, each
+       * with a node on the wrong side, are never the solution. */
       void
       restart_history(const ContactState<dim> &state);
 
@@ -221,6 +223,9 @@ namespace Common
       /** Newton residual that each entry of the history produced; infinite
        * until known. */
       std::vector<double> history_residual;
+      /** The sets at which restart_history() was called in this step: the
+       * equilibria of held sets. */
+      std::vector<std::vector<int>> equilibrium_sets;
       /** Which entries of the history count as seen in the current update
        * (all, unless the iteration progressed since their use). */
       std::vector<bool> history_counts;
