@@ -198,11 +198,13 @@ namespace Common
     template <int dim>
     void
     ContactEnforcement<dim>::assemble_penalty(
-      const AffineConstraints<double> &constraints,
-      const VectorType                &u,
-      const IndexSet                  &locally_owned,
-      MatrixType                      &matrix,
-      VectorType                      &residual) const
+      const AffineConstraints<double>                       &constraints,
+      const VectorType                                      &u,
+      const IndexSet                                        &locally_owned,
+      MatrixType                                            &matrix,
+      VectorType                                            &residual,
+      const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives)
+      const
     {
       normal->assemble(coupling,
                        contact_state,
@@ -210,7 +212,8 @@ namespace Common
                        u,
                        locally_owned,
                        matrix,
-                       residual);
+                       residual,
+                       gap_derivatives);
     }
 
 

@@ -261,32 +261,99 @@ namespace Common
 
       // One column: the change of the forces of @p rows, restricted to the
       // DoFs they couple now; the tangent is minus the derivative.
-      const auto column = [&](const MortarCoupling<dim>       &C,
-                              const std::vector<unsigned int> &rows,
-                              const types::global_dof_index    dof,
-                              const double                     eps) {
-        Forces change;
-        for (const unsigned int j : rows)
-          {
-            Forces F;
-            row_forces(C, j, F);
-            for (const auto &[key, value] : base[j])
-              {
-                const auto it = F.find(key);
-                change[key] += (it == F.end() ? 0. : it->second) - value;
-              }
-          }
-        std::vector<types::global_dof_index> row_dofs;
-        std::vector<double>                  values;
-        for (const auto &[key, value] : change)
-          {
-            row_dofs.push_back(key);
-            values.push_back(-value / eps);
-          }
-        add(row_dofs, dof, values);
-      };
+      for_each_perturbation(loaded,
+                            [&](const MortarCoupling<dim>       &C,
+                                const std::vector<unsigned int> &rows,
+                                const Perturbation              &moved) {
+                              Forces change;
+                              for (const unsigned int j : rows)
+                                {
+                                  Forces F;
+                                  row_forces(C, j, F);
+                                  for (const auto &[key, value] : base[j])
+                                    {
+                                      const auto it = F.find(key);
+                                      change[key] +=
+                                        (it == F.end() ? 0. : it->second) -
+                                        value;
+                                    }
+                                }
+                              std::vector<types::global_dof_index> row_dofs;
+                              std::vector<double>                  values;
+                              for (const auto &[key, value] : change)
+                                {
+                                  row_dofs.push_back(key);
+                                  values.push_back(-value / moved.eps);
+                                }
+                              add(row_dofs, moved.dof, values);
+                            });
+    }
 
-      // The nodes each loaded row depends on.
+
+
+    template <int dim>
+    bool
+    CurrentMortarGeometry<dim>::weighted_gap_derivative(
+      const std::vector<bool> &selected,
+      const VectorType        &u,
+      const GapColumnSink     &add) const
+    {
+      std::vector<unsigned int> rows;
+      for (unsigned int j = 0; j < mortar.n_rows(); ++j)
+        if (selected[j] && mortar.is_integrated(j) && mortar.row(j).has_partner)
+          rows.push_back(j);
+      std::vector<double> base(mortar.n_rows(), 0.);
+      for (const unsigned int j : rows)
+        base[j] = mortar.weighted_gap(j, u);
+
+      for_each_perturbation(
+        rows,
+        [&](const MortarCoupling<dim>       &C,
+            const std::vector<unsigned int> &changed,
+            const Perturbation              &moved) {
+          for (const unsigned int j : changed)
+            {
+              const MortarRow<dim> &row = C.row(j);
+              // A row that loses its partner by the move has no quotient.
+              if (!row.has_partner)
+                continue;
+              // C's gap adds the displacements u, not the move: the moved
+              // node's own share of the gap is added here.
+              double share = 0.;
+              if (moved.kind == Perturbation::Kind::secondary)
+                {
+                  if (moved.index == j)
+                    share = -row.weight;
+                }
+              else
+                for (const auto &[k, M] : row.primary_weights)
+                  if ((moved.kind == Perturbation::Kind::primary &&
+                       k == moved.index) ||
+                      (moved.kind == Perturbation::Kind::tool &&
+                       tool_of_primary_node(k) == moved.index))
+                    share += M;
+              const double gap =
+                C.weighted_gap(j, u) +
+                share * row.normal[moved.component] * moved.eps;
+              add(j, moved.dof, (gap - base[j]) / moved.eps);
+            }
+        });
+      return true;
+    }
+
+
+
+    template <int dim>
+    void
+    CurrentMortarGeometry<dim>::for_each_perturbation(
+      const std::vector<unsigned int>                 &loaded,
+      const std::function<void(const MortarCoupling<dim> &,
+                               const std::vector<unsigned int> &,
+                               const Perturbation &)> &visit) const
+    {
+      if (loaded.empty())
+        return;
+      // The nodes each row depends on.
       std::map<unsigned int, std::vector<unsigned int>> secondary_columns,
         primary_columns;
       std::vector<std::vector<unsigned int>> tool_columns(tools.size());
@@ -309,7 +376,7 @@ namespace Common
 
       ContactSurface<dim> moved_secondary(*secondary);
       MortarCoupling<dim> scratch;
-      std::vector<bool>   selected(n_rows, false);
+      std::vector<bool>   selected(mortar.n_rows(), false);
       const auto rows_for = [&](const std::vector<unsigned int> &rows) {
         std::fill(selected.begin(), selected.end(), false);
         for (const unsigned int j : rows)
@@ -334,7 +401,13 @@ namespace Common
                              partners,
                              integrate_these,
                              scratch);
-              column(scratch, rows, secondary->node(m).dofs[c], eps);
+              visit(scratch,
+                    rows,
+                    {Perturbation::Kind::secondary,
+                     m,
+                     c,
+                     eps,
+                     secondary->node(m).dofs[c]});
               moved_secondary.move_node(m, -shift);
             }
         }
@@ -358,7 +431,13 @@ namespace Common
                                  partners,
                                  integrate_these,
                                  scratch);
-                  column(scratch, rows, primary->node(k).dofs[c], eps);
+                  visit(scratch,
+                        rows,
+                        {Perturbation::Kind::primary,
+                         k,
+                         c,
+                         eps,
+                         primary->node(k).dofs[c]});
                   moved_primary.move_node(k, -shift);
                 }
             }
@@ -387,7 +466,13 @@ namespace Common
                              moved_partners,
                              integrate_these,
                              scratch);
-              column(scratch, rows, tools[i].reference_node_dofs[c], eps);
+              visit(scratch,
+                    rows,
+                    {Perturbation::Kind::tool,
+                     i,
+                     c,
+                     eps,
+                     tools[i].reference_node_dofs[c]});
             }
         }
     }

@@ -392,13 +392,15 @@ namespace Common
 
     template <int dim>
     void
-    DualLagrangeEnforcement<dim>::assemble(const MortarCoupling<dim> &,
-                                           const ContactState<dim> &,
-                                           const AffineConstraints<double> &,
-                                           const VectorType &,
-                                           const IndexSet &,
-                                           MatrixType &,
-                                           VectorType &) const
+    DualLagrangeEnforcement<dim>::assemble(
+      const MortarCoupling<dim> &,
+      const ContactState<dim> &,
+      const AffineConstraints<double> &,
+      const VectorType &,
+      const IndexSet &,
+      MatrixType &,
+      VectorType &,
+      const typename NormalEnforcement<dim>::GapDerivatives *) const
     {}
 
 
@@ -492,18 +494,21 @@ namespace Common
     template <int dim>
     void
     PenaltyEnforcement<dim>::assemble(
-      const MortarCoupling<dim>       &coupling,
-      const ContactState<dim>         &state,
-      const AffineConstraints<double> &constraints,
-      const VectorType                &u,
-      const IndexSet                  &locally_owned,
-      MatrixType                      &matrix,
-      VectorType                      &residual) const
+      const MortarCoupling<dim>                             &coupling,
+      const ContactState<dim>                               &state,
+      const AffineConstraints<double>                       &constraints,
+      const VectorType                                      &u,
+      const IndexSet                                        &locally_owned,
+      MatrixType                                            &matrix,
+      VectorType                                            &residual,
+      const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives)
+      const
     {
       std::vector<types::global_dof_index> dofs;
       Vector<double>                       B;
       FullMatrix<double>                   K;
       Vector<double>                       r;
+      std::vector<double>                  G;
       for (unsigned int j = 0; j < coupling.n_rows(); ++j)
         {
           const MortarRow<dim> &row = coupling.row(j);
@@ -514,22 +519,43 @@ namespace Common
           // A closed node is a spring for the whole iteration, also where
           // its gap has turned positive (a touching node's weighted gap is
           // positive when the surfaces curve apart): without it the first
-          // iteration of a body held only by contact is singular. The
-          // active-set update then opens the node; at convergence the
-          // set agrees with the sign of the gap and p = k max(0, -g).
+          // iteration of a body held only by contact is singular. Its force
+          // then pulls, in the residual too (update_tractions()), so that
+          // the iteration converges to the equilibrium of the set it holds;
+          // the active-set update opens the node. At convergence the set
+          // agrees with the sign of the gap and p = k max(0, -g).
           const double gap     = coupling.weighted_gap(j, u) / row.weight;
           const double dp_dgap = -stiffness;
           const double p       = dp_dgap * gap;
 
           gap_gradient(coupling, j, row.normal, dofs, B);
+          // G: the gradient of the weighted gap on the DoFs of B followed
+          // by the others it depends on.
+          const unsigned int n_force_dofs = dofs.size();
+          G.assign(B.begin(), B.end());
+          if (gap_derivatives != nullptr && !(*gap_derivatives)[j].empty())
+            {
+              std::fill(G.begin(), G.end(), 0.);
+              for (const auto &[dof, value] : (*gap_derivatives)[j])
+                {
+                  const auto it = std::find(dofs.begin(), dofs.end(), dof);
+                  if (it == dofs.end())
+                    {
+                      dofs.push_back(dof);
+                      G.push_back(value);
+                    }
+                  else
+                    G[it - dofs.begin()] += value;
+                }
+            }
           K.reinit(dofs.size(), dofs.size());
           r.reinit(dofs.size());
-          // Residual f_ext - f_int + p B; tangent -(dp/dg~) B B^T.
-          for (unsigned int a = 0; a < dofs.size(); ++a)
+          // Residual f_ext - f_int + p B; tangent -(dp/dg~) B G^T.
+          for (unsigned int a = 0; a < n_force_dofs; ++a)
             {
               r(a) = p * B(a);
               for (unsigned int b = 0; b < dofs.size(); ++b)
-                K(a, b) = -dp_dgap / row.weight * B(a) * B(b);
+                K(a, b) = -dp_dgap / row.weight * B(a) * G[b];
             }
           constraints.distribute_local_to_global(K, r, dofs, matrix, residual);
         }
@@ -553,12 +579,14 @@ namespace Common
           const MortarRow<dim> &row  = coupling.row(j);
           NodeState<dim>       &node = state.node(j);
           node.tangential_traction   = Tensor<1, dim>();
+          // The force of the spring that assemble() puts on a closed
+          // node, a pull where its gap has turned positive: the residual
+          // of the iterate then belongs to its linearisation, and the
+          // active-set update opens the node.
           node.pressure =
             node.status == PointStatus::open ?
               0. :
-              NormalContactLaw::penalty_pressure(coupling.weighted_gap(j, u) /
-                                                   row.weight,
-                                                 stiffness);
+              -stiffness * coupling.weighted_gap(j, u) / row.weight;
         }
     }
 

@@ -472,11 +472,31 @@ namespace Common
         }
       add_geometric_contact_stiffness();
       if (contact_parameters.enforcement == Contact::Enforcement::penalty)
-        contact_enforcement->assemble_penalty(constraints,
-                                              solution,
-                                              locally_owned_dofs,
-                                              system_matrix,
-                                              system_rhs);
+        {
+          // Where the rows follow the configuration, the penalty force's
+          // tangent needs the full derivative of the gap.
+          const auto &coupling = geometry.coupling();
+          const auto &rows     = contact_enforcement->rows();
+          typename Contact::NormalEnforcement<dim>::GapDerivatives derivatives(
+            coupling.n_rows());
+          std::vector<bool> closed(coupling.n_rows(), false);
+          for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+            closed[j] = rows.is_owned(j) && contact_enforcement->is_active(j);
+          const bool full = geometry.weighted_gap_derivative(
+            closed,
+            solution,
+            [&](const unsigned int            j,
+                const types::global_dof_index dof,
+                const double                  value) {
+              derivatives[j].emplace_back(dof, value);
+            });
+          contact_enforcement->assemble_penalty(constraints,
+                                                solution,
+                                                locally_owned_dofs,
+                                                system_matrix,
+                                                system_rhs,
+                                                full ? &derivatives : nullptr);
+        }
       contact_enforcement->assemble_friction(constraints,
                                              solution,
                                              bulk_matrix,

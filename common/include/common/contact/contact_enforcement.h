@@ -243,13 +243,17 @@ namespace Common
        * the nodes whose first DoF is in @p locally_owned. Matrix and vector
        * are not compressed here. Nothing with Lagrange multipliers
        * (NormalEnforcement::assemble()).
+       * @param[in] gap_derivatives The full derivatives of the weighted gaps
+       * where the rows follow the configuration, or null.
        */
       void
       assemble_penalty(const dealii::AffineConstraints<double> &constraints,
                        const VectorType                        &u,
                        const dealii::IndexSet                  &locally_owned,
                        MatrixType                              &matrix,
-                       VectorType                              &residual) const;
+                       VectorType                              &residual,
+                       const typename NormalEnforcement<dim>::GapDerivatives
+                         *gap_derivatives = nullptr) const;
 
       /**
        * @brief Update the nodal pressures and tangential tractions: from

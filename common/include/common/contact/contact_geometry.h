@@ -170,6 +170,39 @@ namespace Common
         (void)add;
       }
 
+      /** @brief Receives one entry of the weighted gaps' derivative: the
+       * row, the column DoF and the value (mm^(dim-1)). */
+      using GapColumnSink =
+        std::function<void(const unsigned int                    row,
+                           const dealii::types::global_dof_index column,
+                           const double                          value)>;
+
+      /**
+       * @brief The full derivative of the weighted gaps of the rows
+       * @p selected with respect to the displacement, where the rows follow
+       * the configuration: the change of n_j, D and M included, which the
+       * fixed rows' gradient (gap_gradient()) leaves out. A penalty force
+       * depends on the gap itself, so its tangent needs these terms (of
+       * the order of the pointwise gap times the penalty stiffness, and,
+       * over a curved rigid tool, of the turn of the surface across a
+       * face). Nothing by default: in the reference configuration the
+       * fixed rows' gradient is exact.
+       * @param[in] selected The rows wanted, by secondary node.
+       * @param[in] u The displacement the rows were integrated at (mm).
+       * @param[in] add Receives every entry of the derivative.
+       * @return False if nothing was computed (the default).
+       */
+      virtual bool
+      weighted_gap_derivative(const std::vector<bool> &selected,
+                              const VectorType        &u,
+                              const GapColumnSink     &add) const
+      {
+        (void)selected;
+        (void)u;
+        (void)add;
+        return false;
+      }
+
       /** @brief Groups of DoFs that the geometric stiffness of
        * contact_force_derivative() couples, each to be coupled all with
        * all in the sparsity pattern; none by default. */

@@ -199,6 +199,20 @@ namespace Common
         const std::vector<dealii::Tensor<1, dim>> &tractions,
         const ColumnSink                          &add) const override;
 
+      using typename ContactGeometry<dim>::GapColumnSink;
+
+      /**
+       * @brief The weighted gaps' derivative by the difference quotients of
+       * contact_force_derivative(): the change of each selected row's
+       * weighted gap, the moved node's own displacement included, when a
+       * node (or tool) it depends on moves.
+       * @return True.
+       */
+      bool
+      weighted_gap_derivative(const std::vector<bool> &selected,
+                              const VectorType        &u,
+                              const GapColumnSink     &add) const override;
+
       /** @brief For each paired row: the DoFs of the secondary nodes within
        * two faces of it and of their primary nodes. */
       std::vector<std::vector<dealii::types::global_dof_index>>
@@ -306,6 +320,35 @@ namespace Common
                      const std::vector<RigidPartner<dim>> &tools,
                      const std::vector<bool>              &rows,
                      MortarCoupling<dim>                  &target) const;
+
+      /** One moved node of a difference quotient: a secondary node, a
+       * primary node or a tool's reference node, its index, the axis and
+       * the length of the move (mm). */
+      struct Perturbation
+      {
+        enum class Kind
+        {
+          secondary,
+          primary,
+          tool
+        } kind;
+        unsigned int                    index;
+        unsigned int                    component;
+        double                          eps;
+        dealii::types::global_dof_index dof;
+      };
+
+      /** Move each node that any of @p rows depends on (the nodes within
+       * two faces, their primary nodes, the tools) by 1e-7 of the mesh
+       * size along each axis in turn, integrate the rows of @p rows that
+       * depend on it again, and pass the result to @p visit with those
+       * rows and the move. */
+      void
+      for_each_perturbation(
+        const std::vector<unsigned int>                 &rows,
+        const std::function<void(const MortarCoupling<dim> &,
+                                 const std::vector<unsigned int> &,
+                                 const Perturbation &)> &visit) const;
 
       /** The secondary nodes within two faces of node @p j (itself
        * included), sorted. */

@@ -53,6 +53,12 @@ namespace Common
     public:
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
       using MatrixType = dealii::TrilinosWrappers::SparseMatrix;
+      /** Per row of a coupling: the full derivative of its weighted gap
+       * (ContactGeometry::weighted_gap_derivative()) as (DoF, value in
+       * mm^(dim-1)) pairs; empty where the fixed rows' gradient
+       * (gap_gradient()) is exact. */
+      using GapDerivatives = std::vector<
+        std::vector<std::pair<dealii::types::global_dof_index, double>>>;
 
       /** @brief Virtual destructor of the interface. */
       virtual ~NormalEnforcement() = default;
@@ -107,6 +113,9 @@ namespace Common
        * whose first DoF is in @p locally_owned. Matrix and vector are not
        * compressed here. Nothing with multipliers (they are condensed
        * into the constraints).
+       * @param[in] gap_derivatives The full derivatives of the weighted
+       * gaps where the rows follow the configuration; null, or an empty
+       * entry, where the fixed rows' gradient is used.
        */
       virtual void
       assemble(const MortarCoupling<dim>               &coupling,
@@ -115,7 +124,8 @@ namespace Common
                const VectorType                        &u,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType                              &residual) const = 0;
+               VectorType                              &residual,
+               const GapDerivatives *gap_derivatives) const = 0;
 
       /**
        * @brief Set the pressures of the current iterate in @p state (zero
@@ -212,7 +222,9 @@ namespace Common
                const VectorType                        &u,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType &residual) const override;
+               VectorType                              &residual,
+               const typename NormalEnforcement<dim>::GapDerivatives
+                 *gap_derivatives) const override;
 
       /**
        * @brief Equilibrium of closed node j, \f$r_j + D_j(-\lambda_j n_j +
@@ -283,10 +295,12 @@ namespace Common
 
       /**
        * @brief Residual \f$p B\f$ and tangent
-       * \f$\epsilon/D_j\,B B^T\f$ of every closed node, B the gradient of
-       * its weighted gap (gap_gradient()), p = -epsilon g. A closed node is
-       * a spring for the whole iteration, also where its gap has turned
-       * positive.
+       * \f$\epsilon/D_j\,B G^T\f$ of every closed node, B the gradient of
+       * its weighted gap with the rows fixed (gap_gradient()), which
+       * distributes the force, G the full gradient where the rows follow
+       * the configuration (@p gap_derivatives; B otherwise), p = -epsilon g.
+       * A closed node is a spring for the whole iteration, also where its
+       * gap has turned positive.
        */
       void
       assemble(const MortarCoupling<dim>               &coupling,
@@ -295,10 +309,15 @@ namespace Common
                const VectorType                        &u,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType &residual) const override;
+               VectorType                              &residual,
+               const typename NormalEnforcement<dim>::GapDerivatives
+                 *gap_derivatives) const override;
 
-      /** @brief Pressures from the penalty law
-       * NormalContactLaw::penalty_pressure(); no tangential tractions. */
+      /** @brief Pressures of the springs of assemble(), -epsilon g on a
+       * closed node (a pull where its gap has turned positive, which the
+       * active-set update then opens; at convergence
+       * NormalContactLaw::penalty_pressure()), zero on an open one; no
+       * tangential tractions. */
       void
       update_tractions(const MortarCoupling<dim> &coupling,
                        const VectorType          &u,
