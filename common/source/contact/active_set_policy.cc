@@ -569,7 +569,9 @@ namespace Common
       if (distributed)
         Utilities::MPI::sum(differing, comm, differing);
 
-      // (violation, node, 1 if its change alone leads to an unseen set).
+      // (violation, node, 2 if its change alone leads to an unseen set, 1 if
+      // only to the set of an earlier equilibrium (history_residual 0, see
+      // restart_history()), 0 if to a set seen otherwise).
       std::vector<double> candidates;
       for (unsigned int j = 0, l = 0; j < nodes.size(); ++j)
         {
@@ -579,16 +581,20 @@ namespace Common
             {
               const auto [C_n, C_t] =
                 complementarity(j, nodes, normal, friction, state);
-              bool unseen = true;
-              for (unsigned int i = 0; i < history.size() && unseen; ++i)
-                unseen =
-                  !(history_counts[i] && history[i][l] == next_codes[l] &&
+              bool unseen = true, only_equilibria = true;
+              for (unsigned int i = 0; i < history.size(); ++i)
+                if (history_counts[i] && history[i][l] == next_codes[l] &&
                     differing[i] ==
-                      (history[i][l] != current_codes[l] ? 1u : 0u));
+                      (history[i][l] != current_codes[l] ? 1u : 0u))
+                  {
+                    unseen = false;
+                    only_equilibria =
+                      only_equilibria && history_residual[i] == 0.;
+                  }
               candidates.push_back((std::abs(C_n) + C_t.norm()) *
                                    nodes[j].weight);
               candidates.push_back(j);
-              candidates.push_back(unseen ? 1. : 0.);
+              candidates.push_back(unseen ? 2. : (only_equilibria ? 1. : 0.));
             }
           ++l;
         }
@@ -600,18 +606,23 @@ namespace Common
           candidates = all;
         }
       std::vector<std::pair<double, unsigned int>> violations;
-      std::vector<unsigned int>                    unseen;
+      std::vector<unsigned int>                    unseen, equilibria;
       for (unsigned int c = 0; c + 2 < candidates.size(); c += 3)
         {
           const auto j = static_cast<unsigned int>(candidates[c + 1]);
           violations.emplace_back(candidates[c], j);
-          if (candidates[c + 2] > 0.)
+          if (candidates[c + 2] > 1.5)
             unseen.push_back(j);
+          else if (candidates[c + 2] > 0.5)
+            equilibria.push_back(j);
         }
       std::sort(violations.rbegin(), violations.rend());
-      for (const auto &[size, j] : violations)
-        if (std::find(unseen.begin(), unseen.end(), j) != unseen.end())
-          return j;
+      // A set not seen yet first; else back to an earlier equilibrium's
+      // set, whose iteration may take another path from here.
+      for (const auto *allowed : {&unseen, &equilibria})
+        for (const auto &[size, j] : violations)
+          if (std::find(allowed->begin(), allowed->end(), j) != allowed->end())
+            return j;
       return numbers::invalid_unsigned_int;
     }
 
