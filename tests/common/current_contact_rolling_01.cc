@@ -36,6 +36,7 @@
 #include <common/problems/contact_newton_problem.h>
 
 #include "../tests.h"
+#include "../tool_on_strip.h"
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -53,19 +54,16 @@
 #include <string>
 
 using namespace dealii;
+using namespace ToolOnStrip;
 
 namespace
 {
-  constexpr types::boundary_id bottom_id    = 1;
-  constexpr types::boundary_id top_id       = 2;
-  constexpr types::material_id strip_id     = 1;
-  constexpr types::material_id carrier_id   = 9;
-  constexpr double             radius       = 10.;  // mm
-  constexpr double             thickness    = 2.;   // mm
-  constexpr double             indentation  = 0.01; // mm
-  constexpr double             turn         = 0.25 * numbers::PI;
-  constexpr double             mu           = 1.;
-  constexpr unsigned int       n_turn_steps = 18;
+  constexpr double       radius       = 10.;  // mm
+  constexpr double       thickness    = 2.;   // mm
+  constexpr double       indentation  = 0.01; // mm
+  constexpr double       turn         = 0.25 * numbers::PI;
+  constexpr double       mu           = 1.;
+  constexpr unsigned int n_turn_steps = 18;
 
   std::string
   format(const double value, const unsigned int digits = 6)
@@ -89,30 +87,7 @@ main(int argc, char **argv)
   initlog();
 
   parallel::shared::Triangulation<2> triangulation(MPI_COMM_WORLD);
-  {
-    Triangulation<2> strip, carrier;
-    GridGenerator::subdivided_hyper_rectangle(strip,
-                                              {180, 4},
-                                              Point<2>(-12., 0.),
-                                              Point<2>(6., thickness));
-    for (const auto &cell : strip.active_cell_iterators())
-      {
-        cell->set_material_id(strip_id);
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            cell->face(f)->set_boundary_id(
-              std::abs(cell->face(f)->center()[1]) < 1e-12 ? bottom_id :
-              std::abs(cell->face(f)->center()[1] - thickness) < 1e-12 ?
-                                                             top_id :
-                                                             0);
-      }
-    GridGenerator::hyper_rectangle(carrier,
-                                   Point<2>(-40., 20.),
-                                   Point<2>(-39., 21.));
-    for (const auto &cell : carrier.active_cell_iterators())
-      cell->set_material_id(carrier_id);
-    Common::Geometry::join_bodies<2>({&strip, &carrier}, triangulation);
-  }
+  ToolOnStrip::make_mesh(triangulation, -12., 6., 180, 4, thickness);
 
   const FESystem<2> fe(FE_Q<2>(1), 2);
   const MappingQ<2> mapping(1);
@@ -121,31 +96,11 @@ main(int argc, char **argv)
 
   // The carrier moves rigidly with the cylinder's axis; its first vertex
   // is the tool's reference node. The strip's bottom rests on the backing.
-  AffineConstraints<double>              constraints;
-  std::array<types::global_dof_index, 2> reference_dofs{};
-  std::vector<types::global_dof_index>   carrier_dofs;
-  {
-    constraints.reinit(complete_index_set(dof_handler.n_dofs()));
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->material_id() == carrier_id)
-        {
-          cell->get_dof_indices(cell_dofs);
-          for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-            if (fe.system_to_component_index(i).first == 1)
-              carrier_dofs.push_back(cell_dofs[i]);
-          for (const auto dof : cell_dofs)
-            constraints.add_line(dof);
-          reference_dofs = {
-            {cell->vertex_dof_index(0, 0), cell->vertex_dof_index(0, 1)}};
-        }
-    const FEValuesExtractors::Scalar y(1);
-    for (const auto dof : DoFTools::extract_boundary_dofs(dof_handler,
-                                                          fe.component_mask(y),
-                                                          {bottom_id}))
-      constraints.add_line(dof);
-    constraints.close();
-  }
+  AffineConstraints<double> constraints;
+  const auto carrier = ToolOnStrip::constrain(dof_handler, constraints);
+  constraints.close();
+  const auto &reference_dofs = carrier.reference_dofs;
+  const auto &carrier_dofs   = carrier.vertical_dofs;
 
   std::map<types::material_id,
            std::shared_ptr<const Common::Materials::FiniteStrainMaterial>>
