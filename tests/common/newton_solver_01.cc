@@ -11,9 +11,12 @@
  * stops on a non-finite residual, on a residual above the divergence bound
  * (and only there), and on a cycling active set, unless the
  * problem offers the one-change-per-equilibrium mode: then the cycling set
- * is held until equilibrium, and each later update changes one point from
- * an equilibrium until none changes, or until an equilibrium returns to
- * the one before the last (two sets trading places). With
+ * is held until its equilibrium residual falls below the complementarity
+ * residual or the tolerance, and each later update changes one point from
+ * there until none changes; a held set whose equilibrium residual stays
+ * above both stays held; once a change leads back to a set held before,
+ * sets are held to the tolerance, and the loop stops when an equilibrium
+ * returns to the one before the last (two sets trading places). With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -95,12 +98,15 @@ namespace
    * the one-point updates change @p one_point_changes[k] points in turn.
    * The complementarity residual is 1e-3 until the changes run out, then
    * 0; or, if @p complementarity is given, its entry for the number of
-   * one-point updates made so far (the last entry repeats). */
+   * one-point updates made so far (the last entry repeats). If
+   * @p revisits is given, the problem reports whether the k-th one-point
+   * update led back to a set held before (the last entry repeats). */
   NewtonStatistics
   run_held(const std::vector<double>       &equilibrium,
            const std::vector<unsigned int> &one_point_changes,
            std::vector<std::string>        &calls,
-           const std::vector<double>       &complementarity = {})
+           const std::vector<double>       &complementarity = {},
+           const std::vector<bool>         &revisits        = {})
   {
     NonlinearSolverParameters parameters;
     parameters.max_iterations = 12;
@@ -145,6 +151,14 @@ namespace
       calls.push_back("one point (" + std::to_string(n) + ")");
       return n;
     };
+    if (!revisits.empty())
+      callbacks.revisits_held_set = [&]() {
+        const bool back =
+          revisits[std::min<std::size_t>(one_point - 1, revisits.size() - 1)];
+        if (back)
+          calls.push_back("back to a held set");
+        return back;
+      };
     ConditionalOStream quiet(std::cout, false);
     return solve_newton(parameters, callbacks, quiet);
   }
@@ -220,10 +234,12 @@ main()
   // A cycling active set stops the loop.
   report("cycling", run({{1., 1e-3, 1e-1, 3}}, 1e-8, 1));
   // With the one-change-per-equilibrium mode a cycle holds the set: no
-  // update until the equilibrium residual meets the tolerance (iteration
-  // 3), then the history restarts and one point changes; held again until
-  // equilibrium (iteration 5), one more change, and so on until no point
-  // changes at an equilibrium with the complementarity met (iteration 7).
+  // update until the equilibrium residual (1e-6 at iteration 2) falls
+  // below the complementarity residual (1e-3), then the history restarts
+  // and one point changes; held again until the same holds (iteration 3),
+  // one more change; with the changes made the complementarity residual
+  // is met, and the set is held until the equilibrium residual meets the
+  // tolerance (iteration 5), where no point changes.
   {
     std::vector<std::string> calls;
     report("cycling, one change per equilibrium",
@@ -233,27 +249,33 @@ main()
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }
-  // A problem whose equilibrium never meets the tolerance stays held
-  // until the iteration limit: no update, no convergence.
+  // A held set whose equilibrium residual stays above its complementarity
+  // residual and the tolerance (and does not grow) stays held until the
+  // iteration limit: no update, no convergence.
   {
     std::vector<std::string> calls;
     report("cycling, equilibrium not reached",
-           run_held({1e-3, 1e-6}, {1}, calls));
+           run_held({1e-3, 2e-3}, {1}, calls));
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }
 
   // Two sets that trade places at every equilibrium (a node tensile when
-  // closed and penetrating when open): the third equilibrium returns to
-  // the first one's complementarity residual, and the loop stops there
-  // (iteration 6) with a failure that says so.
+  // closed and penetrating when open): the first change (iteration 2, at
+  // an equilibrium) leads to a new set, which decides at iteration 3
+  // before its equilibrium; that change leads back to the first set, and
+  // from then on every set is held to the tolerance. The equilibrium of
+  // iteration 6 returns to the complementarity residual of the one before
+  // the last (iteration 2), and the loop stops there with a failure that
+  // says so.
   {
     std::vector<std::string> calls;
     report("alternating equilibria",
            run_held({1e-3, 1e-12, 1e-5, 1e-12, 1e-5, 1e-12, 1e-5, 1e-12},
                     {1, 1, 1, 1, 1, 1},
                     calls,
-                    {3.848e-4, 3.925e-4, 3.848e-4}));
+                    {3.848e-4, 5e-4, 3.925e-4, 3.848e-4},
+                    {false, true}));
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }

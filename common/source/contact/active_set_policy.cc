@@ -24,6 +24,7 @@ namespace Common
       , accelerate_release(parameters.accelerate_release)
       , initial_active_set(parameters.initial_active_set)
       , cycling(false)
+      , revisited_held_set(false)
       , last_update_extrapolated(false)
       , extrapolation_enabled(parameters.accelerate_release)
     {}
@@ -387,16 +388,18 @@ namespace Common
       if (distributed)
         changed =
           Utilities::MPI::max(static_cast<unsigned int>(changed), comm) > 0;
-      cycling = false;
+      cycling            = false;
+      revisited_held_set = false;
       if (changed && (one_point || seen(next_codes)))
         {
-          extrapolation_enabled       = false;
-          const unsigned int j_single = single_change(nodes,
-                                                      normal,
-                                                      friction,
-                                                      state,
-                                                      current_codes,
-                                                      next_codes);
+          extrapolation_enabled               = false;
+          const auto [j_single, back_to_held] = single_change(nodes,
+                                                              normal,
+                                                              friction,
+                                                              state,
+                                                              current_codes,
+                                                              next_codes);
+          revisited_held_set                  = back_to_held;
           cycling = j_single == numbers::invalid_unsigned_int;
           // A cycle changes nothing: the caller decides what follows.
           if (cycling)
@@ -550,7 +553,7 @@ namespace Common
     // its changed nodes, with the number of nodes (over all ranks) in which
     // each history entry differs from the current set.
     template <int dim>
-    unsigned int
+    std::pair<unsigned int, bool>
     ActiveSetPolicy<dim>::single_change(
       const std::vector<NodeKinematics<dim>> &nodes,
       const NormalEnforcement<dim>           &normal,
@@ -622,8 +625,8 @@ namespace Common
       for (const auto *allowed : {&unseen, &equilibria})
         for (const auto &[size, j] : violations)
           if (std::find(allowed->begin(), allowed->end(), j) != allowed->end())
-            return j;
-      return numbers::invalid_unsigned_int;
+            return {j, allowed == &equilibria};
+      return {numbers::invalid_unsigned_int, false};
     }
 
 
@@ -633,6 +636,15 @@ namespace Common
     ActiveSetPolicy<dim>::is_cycling() const
     {
       return cycling;
+    }
+
+
+
+    template <int dim>
+    bool
+    ActiveSetPolicy<dim>::revisits_held_set() const
+    {
+      return revisited_held_set;
     }
 
 

@@ -338,6 +338,15 @@ namespace Common
 
     template <int dim>
     bool
+    ContactEnforcement<dim>::revisits_held_set() const
+    {
+      return policy.revisits_held_set();
+    }
+
+
+
+    template <int dim>
+    bool
     ContactEnforcement<dim>::is_cycling() const
     {
       return policy.is_cycling();

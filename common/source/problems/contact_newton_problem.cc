@@ -869,6 +869,9 @@ namespace Common
           callbacks.update_one_point = [&]() {
             return update_set(true);
           };
+          callbacks.revisits_held_set = [&]() {
+            return contact_enforcement->revisits_held_set();
+          };
         }
 
       // A diverging iterate may produce a non-finite value: Release builds

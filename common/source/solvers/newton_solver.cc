@@ -150,6 +150,10 @@ namespace Common
       bool                   one_change_per_equilibrium = false;
       bool                   hold_set                   = false;
       unsigned int           n_held                     = 0;
+      // A held set changes once its equilibrium residual falls below the
+      // complementarity residual, until a change leads back to a set held
+      // before; from then on at equilibrium only (see NewtonCallbacks).
+      bool early_changes = true;
       // The complementarity residuals of the held sets' equilibria: an
       // equilibrium that returns to the one before the last (A, B, A)
       // alternates between two sets for good, since the single change
@@ -187,6 +191,12 @@ namespace Common
             hold_set && n_held > 0 && !inexact_solve &&
             residual.increment < parameters.step_tolerance &&
             residual.equilibrium <= parameters.step_test_residual_bound;
+          // A held iterate whose equilibrium residual is below its
+          // complementarity residual decides the next change as its
+          // equilibrium would: the violation outweighs the iterate's error.
+          const bool hold_decides =
+            hold_set && early_changes && !inexact_solve &&
+            residual.equilibrium < residual.complementarity;
           n_held = hold_set ? n_held + 1 : 0;
           if (hold_set &&
               (residual.equilibrium < parameters.tolerance ||
@@ -212,7 +222,7 @@ namespace Common
                 }
             }
           if (hold_set && (residual.equilibrium < parameters.tolerance ||
-                           hold_diverges || hold_at_round_off))
+                           hold_diverges || hold_at_round_off || hold_decides))
             {
               hold_set = false;
               n_held   = 0;
@@ -224,6 +234,9 @@ namespace Common
                                          callbacks.update_active_set();
           if (one_change_per_equilibrium && n_changed > 0)
             hold_set = true;
+          if (one_change_per_equilibrium && n_changed > 0 &&
+              callbacks.revisits_held_set && callbacks.revisits_held_set())
+            early_changes = false;
           // A semismooth iteration that still changes the set after
           // n_semismooth iterations wanders among sets without repeating
           // one: from here, too, one change per equilibrium.

@@ -158,6 +158,12 @@ namespace Common
       bool
       is_cycling() const;
 
+      /** @brief True if the last update changed one point and thereby went
+       * back to a set held at an earlier call of restart_history() in this
+       * step, every other change leading to a set seen before. */
+      bool
+      revisits_held_set() const;
+
       /** @brief Norm of the normal and tangential complementarity
        * functions weighted by D_j (N) over the paired nodes of all ranks;
        * zero without multipliers (penalty). Collective. */
@@ -195,8 +201,11 @@ namespace Common
        * @p current_codes to @p next_codes, leads to a set not in the
        * history (the entries that count, see update()) and has the
        * largest complementarity violation (the same on every rank);
-       * numbers::invalid_unsigned_int if there is none (collective). */
-      unsigned int
+       * numbers::invalid_unsigned_int if there is none (collective). If
+       * every change leads to a seen set, the one that leads back to a set
+       * of an earlier restart_history() instead; the second value is then
+       * true. */
+      std::pair<unsigned int, bool>
       single_change(const std::vector<NodeKinematics<dim>> &nodes,
                     const NormalEnforcement<dim>           &normal,
                     const FrictionModel<dim>               &friction,
@@ -230,8 +239,10 @@ namespace Common
        * (all, unless the iteration progressed since their use). */
       std::vector<bool> history_counts;
       bool              cycling;
-      bool              last_update_extrapolated;
-      bool              extrapolation_enabled;
+      /** See revisits_held_set(). */
+      bool revisited_held_set;
+      bool last_update_extrapolated;
+      bool extrapolation_enabled;
     };
   } // namespace Contact
 } // namespace Common

@@ -336,6 +336,12 @@ namespace Common
                         const double      residual  = -1.,
                         const bool        one_point = false);
 
+      /** @brief True if the last update changed one point and went back
+       * to a set held earlier in the step
+       * (ActiveSetPolicy::revisits_held_set()). */
+      bool
+      revisits_held_set() const;
+
       /** @brief True if the last update could only return to an active
        * set seen earlier in this step (the set is then left unchanged). */
       bool

@@ -91,9 +91,15 @@ namespace Common
        * iteration, nor do eight semismooth iterations that still change
        * the set; the rest of the step is an active-set method on
        * equilibria: the set is held, without updates, until the
-       * equilibrium residual meets the tolerance, then the history is
-       * restarted and the one point with the largest violation changes,
-       * and so on. A nonlinear problem judges its sets on states out of
+       * equilibrium residual falls below the complementarity residual
+       * (the set's violation then outweighs the iterate's error, and the
+       * pressures and gaps that decide the next change have their signs),
+       * or meets the tolerance; then the history is restarted and the one
+       * point with the largest violation changes, and so on. Once a change
+       * leads back to a set held before in the step
+       * (revisits_held_set()), each set is held until the tolerance: the
+       * equilibria are then compared to detect an alternation between
+       * two. A nonlinear problem judges its sets on states out of
        * equilibrium, and a bending body (whose contact stiffness is no
        * M-matrix) may cycle under the semismooth rule even from equilibria;
        * one change per equilibrium does not. */
@@ -101,6 +107,10 @@ namespace Common
       /** Apply the active-set rule to the one point with the largest
        * violation; returns the number of changed points (0 or 1). */
       std::function<unsigned int()> update_one_point;
+      /** Optional, with update_one_point: true if the last change of
+       * update_one_point() led back to a set held earlier in the step
+       * (every other change led to a set seen before). */
+      std::function<bool()> revisits_held_set;
     };
 
     /**
