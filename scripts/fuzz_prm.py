@@ -221,9 +221,15 @@ APPS = {
     "reynolds_roller": {
         "production": "reynolds_roller/reynolds_roller_mu03.prm",
         # Pressing 1 mm in 2 steps, the bottom's release in 1 step and 2
-        # degrees of the turn in 1 step on 30 x 2 cells.
+        # degrees of the turn in 1 step on 30 x 2 cells (10 mm). A face is
+        # paired only if all of it lies within the search distance of the
+        # roller: with the production's 5 mm the faces beyond x = 10 mm
+        # stay unpaired, inside the contact zone (half-width about 7.7 mm
+        # at 1 mm), which then ends at the search region's edge; 10 mm
+        # pairs the faces up to 20 mm.
         "coarse": [("Mesh", "Number of cells along the length", "30"),
                    ("Mesh", "Number of cells through the thickness", "2"),
+                   ("Contact", "Search distance", "10"),
                    ("Load program/Stage 1", "Number of steps", "2"),
                    ("Load program/Stage 1", "Indentation", "1"),
                    ("Load program/Stage 2", "Number of steps", "1"),
