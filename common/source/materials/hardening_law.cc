@@ -117,6 +117,20 @@ namespace Common
                 }
               break;
           }
+        // Metals yield at strains above 1e-4 (annealed aluminium and
+        // copper: about 3e-4). A yield strain below 1e-6 is a unit error
+        // (a modulus in Pa against stresses in MPa), and its return mapping
+        // cannot be solved to the Newton tolerance.
+        const double initial_flow_stress =
+          data.type == HardeningType::tabulated ? data.table.front().second :
+                                                  data.yield_stress;
+        if (data.youngs_modulus > 0. &&
+            initial_flow_stress < 1e-6 * data.youngs_modulus)
+          return "the initial yield strain, Yield stress / Young's modulus "
+                 "= " +
+                 number(initial_flow_stress / data.youngs_modulus) +
+                 ", is below 1e-6: no metal yields at so small a strain "
+                 "(both in MPa).";
         return "";
       }
     } // namespace
