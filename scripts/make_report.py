@@ -293,6 +293,8 @@ def robustness_section(results):
         out += generic_table(runs, [
             ("app", "application"), ("variation", "variation"), ("status", "status"),
             ("newton_iterations", "Newton"), ("max_iterations_per_step", "most per step"),
+            ("max_with_cutbacks", "most per step, cutbacks counted"),
+            ("failed_attempt_iterations", "in failed attempts"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
             ("change_vs_coarse_percent", "headline change [%]"),
             ("change_against", "against"), ("detail", "detail")])

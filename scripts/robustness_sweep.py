@@ -9,8 +9,10 @@ does: table fuzz_prm.APPS) and classifies each run:
              inf in any CSV file, and the force balance of summary.json
              (results/force_balance_relative_error, or
              results/max_force_balance_relative_error) at most 1e-6; the
-             Newton iterations (total, most per step) and the cutbacks are
-             listed, and a step of more than 15 iterations is marked;
+             Newton iterations (total, most per step, and most per step
+             with cutbacks counted: a step's accepted attempt and the failed
+             attempts cut back before it) and the cutbacks are listed, and a
+             step of more than 15 iterations, cutbacks counted, is marked;
   failed     exit != 0 with one line '<app>: error: ...' on standard error
              and no result file (summary.json, profile CSV, PNG): a clean
              refusal or a solver failure reported as such;
@@ -346,10 +348,20 @@ def classify(app, case_dir, code, stopped, progressing):
     if balance is not None and not balance <= FORCE_BALANCE_TOLERANCE:
         return "DEFECT force balance", f"relative error {balance:.2e}", newton
     detail = "" if balance is None else f"force balance {balance:.1e}"
-    if newton.get("max_iterations_per_step", 0) > MAX_ITERATIONS_PER_STEP:
+    if most_per_step(newton) > MAX_ITERATIONS_PER_STEP:
         detail = (detail + "; " if detail else "") + (
-            f"more than {MAX_ITERATIONS_PER_STEP} Newton iterations in a step")
+            f"more than {MAX_ITERATIONS_PER_STEP} Newton iterations in a step "
+            "(cutbacks counted)")
     return "converged", detail, newton
+
+
+def most_per_step(newton):
+    """The most Newton iterations of a step with its cutbacks counted: the
+    accepted attempt and the failed attempts before it (summary.json's
+    max_iterations_per_step_with_cutbacks; max_iterations_per_step where an
+    older summary lacks it)."""
+    return newton.get("max_iterations_per_step_with_cutbacks",
+                      newton.get("max_iterations_per_step", 0))
 
 
 def main():
@@ -437,18 +449,22 @@ def main():
             row = {"app": app, "variation": name, "status": status,
                    "newton_iterations": newton.get("total_iterations", ""),
                    "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
+                   "max_with_cutbacks": most_per_step(newton) if newton else "",
+                   "failed_attempt_iterations": newton.get("failed_attempt_iterations", ""),
                    "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
                    "headline": "" if headline is None else headline,
                    "change_vs_coarse_percent": change, "change_against": against,
                    "detail": detail, "case": os.path.relpath(case_dir, ROOT)}
             rows.append(row)
             print(f"{app:14s} {name:30s} {status:22s} it {str(row['newton_iterations']):>5s} "
-                  f"max {str(row['max_iterations_per_step']):>3s} cutbacks "
+                  f"max {str(row['max_iterations_per_step']):>3s} "
+                  f"({str(row['max_with_cutbacks']):>3s}) cutbacks "
                   f"{str(row['cutbacks']):>3s} {wall:7.1f} s {change:>8s} %  {detail[:100]}",
                   flush=True)
         for name, why in VARIATIONS[app]["not_available"]:
             rows.append({"app": app, "variation": name, "status": "not available",
                          "newton_iterations": "", "max_iterations_per_step": "",
+                         "max_with_cutbacks": "", "failed_attempt_iterations": "",
                          "cutbacks": "", "wall_time_s": "", "headline": "",
                          "change_vs_coarse_percent": "", "change_against": "",
                          "detail": why, "case": ""})

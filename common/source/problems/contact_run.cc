@@ -26,16 +26,25 @@ namespace Common
     newton_summary(const Solvers::LoadSteppingStatistics &stepping)
     {
       unsigned int total_iterations = 0, max_iterations = 0;
-      for (const auto n : stepping.newton_iterations)
+      unsigned int total_failed = 0, max_with_cutbacks = 0;
+      for (unsigned int i = 0; i < stepping.newton_iterations.size(); ++i)
         {
+          const unsigned int n      = stepping.newton_iterations[i];
+          const unsigned int failed = stepping.failed_attempt_iterations[i];
           total_iterations += n;
-          max_iterations = std::max(max_iterations, n);
+          total_failed += failed;
+          max_iterations    = std::max(max_iterations, n);
+          max_with_cutbacks = std::max(max_with_cutbacks, n + failed);
         }
       IO::JsonObject newton;
       newton.set("total_iterations", total_iterations)
         .set("max_iterations_per_step", max_iterations)
         .set("iterations_per_step", stepping.newton_iterations)
         .set("n_cutbacks", stepping.n_cutbacks)
+        .set("failed_attempt_iterations", total_failed)
+        .set("max_iterations_per_step_with_cutbacks", max_with_cutbacks)
+        .set("failed_attempt_iterations_per_step",
+             stepping.failed_attempt_iterations)
         .set("n_steps_converged_on_step_tolerance",
              stepping.n_converged_on_step);
       return newton;

@@ -265,6 +265,8 @@ namespace Common
     {
       LoadSteppingStatistics statistics;
       unsigned int           step = 0;
+      // Iterations of the failed attempts since the last accepted step.
+      unsigned int failed_iterations = 0;
       for (unsigned int s = 0; s < program.stages.size(); ++s)
         {
           const auto  &stage     = program.stages[s];
@@ -287,6 +289,9 @@ namespace Common
                   reached = target;
                   statistics.times.push_back(state.time);
                   statistics.newton_iterations.push_back(newton.n_iterations);
+                  statistics.failed_attempt_iterations.push_back(
+                    failed_iterations);
+                  failed_iterations = 0;
                   statistics.n_converged_on_step += newton.converged_on_step;
                   StepInfo info;
                   info.step             = step;
@@ -305,6 +310,7 @@ namespace Common
                 {
                   callbacks.reject();
                   ++statistics.n_cutbacks;
+                  failed_iterations += newton.n_iterations;
                   increment *= 0.5;
                   const std::string where =
                     "pseudo-time " + IO::Console::format(state.time) +

@@ -58,7 +58,13 @@ namespace Common
 
     /**
      * @brief The Newton record of a run for summary.json: total_iterations,
-     * max_iterations_per_step, iterations_per_step, n_cutbacks,
+     * max_iterations_per_step, iterations_per_step (the accepted attempt of
+     * each step: its stabilized solves and multiplier updates included),
+     * n_cutbacks, failed_attempt_iterations (the iterations of the attempts
+     * that were cut back, not in total_iterations),
+     * max_iterations_per_step_with_cutbacks (a step's accepted attempt and
+     * the failed attempts since the step before it),
+     * failed_attempt_iterations_per_step,
      * n_steps_converged_on_step_tolerance.
      */
     IO::JsonObject

@@ -171,8 +171,13 @@ namespace Common
     struct LoadSteppingStatistics
     {
       /** Pseudo-time of each accepted step. */
-      std::vector<double>       times;
+      std::vector<double> times;
+      /** Newton iterations of each accepted step's successful attempt. */
       std::vector<unsigned int> newton_iterations;
+      /** Newton iterations of the failed attempts (each followed by a
+       * cutback) between the previous accepted step and each accepted
+       * step; the same length as newton_iterations. */
+      std::vector<unsigned int> failed_attempt_iterations;
       unsigned int              n_cutbacks = 0;
       /** Accepted steps whose Newton iteration converged on the step test
        * (equilibrium residual at round-off above its tolerance). */
