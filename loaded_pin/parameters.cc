@@ -1,5 +1,8 @@
 #include "parameters.h"
 
+#include <common/io/console.h>
+#include <common/solvers/load_program.h>
+
 namespace LoadedPin
 {
   void
@@ -161,8 +164,8 @@ namespace LoadedPin
                         "model (the benchmark: 100000), the sum of two "
                         "equal point forces at the centres of the pin's end "
                         "faces, along +x (away from the clamped end); the "
-                        "quarter model carries a quarter of it. Positive. "
-                        "Units: N.");
+                        "quarter model carries a quarter of it. From 1e-9 "
+                        "to 1e9. Units: N.");
     }
     prm.leave_subsection();
   }
@@ -187,6 +190,13 @@ namespace LoadedPin
     prm.leave_subsection();
     AssertThrow(total_force > 0.,
                 ExcMessage("Loading: 'Total force' must be positive."));
+    // The residuals are relative to the load, as in a load program.
+    using Program = Common::Solvers::LoadProgramParameters;
+    AssertThrow(total_force >= Program::min_channel_value &&
+                  total_force <= Program::max_channel_value,
+                ExcMessage("Loading: 'Total force' must lie between 1e-9 "
+                           "and 1e9 N, got " +
+                           Common::IO::Console::format(total_force) + "."));
   }
 
 

@@ -1,6 +1,8 @@
 #include "parameters.h"
 
+#include <common/io/console.h>
 #include <common/io/parameter_values.h>
+#include <common/solvers/load_program.h>
 
 #include <cmath>
 
@@ -202,8 +204,8 @@ namespace Punch3d
       prm.declare_entry("Pressure",
                         "100",
                         Patterns::Double(0.),
-                        "Uniform pressure on the top face of the punch. "
-                        "Units: MPa.");
+                        "Uniform pressure on the top face of the punch, "
+                        "from 1e-9 to 1e9. Units: MPa.");
     }
     prm.leave_subsection();
   }
@@ -220,6 +222,13 @@ namespace Punch3d
     prm.leave_subsection();
     AssertThrow(pressure > 0.,
                 ExcMessage("Loading: 'Pressure' must be positive."));
+    // The residuals are relative to the load, as in a load program.
+    using Program = Common::Solvers::LoadProgramParameters;
+    AssertThrow(pressure >= Program::min_channel_value &&
+                  pressure <= Program::max_channel_value,
+                ExcMessage("Loading: 'Pressure' must lie between 1e-9 and "
+                           "1e9 MPa, got " +
+                           Common::IO::Console::format(pressure) + "."));
   }
 
 
