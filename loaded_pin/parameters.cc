@@ -1,6 +1,5 @@
 #include "parameters.h"
 
-#include <common/io/console.h>
 #include <common/solvers/load_program.h>
 
 namespace LoadedPin
@@ -190,13 +189,10 @@ namespace LoadedPin
     prm.leave_subsection();
     AssertThrow(total_force > 0.,
                 ExcMessage("Loading: 'Total force' must be positive."));
-    // The residuals are relative to the load, as in a load program.
-    using Program = Common::Solvers::LoadProgramParameters;
-    AssertThrow(total_force >= Program::min_channel_value &&
-                  total_force <= Program::max_channel_value,
-                ExcMessage("Loading: 'Total force' must lie between 1e-9 "
-                           "and 1e9 N, got " +
-                           Common::IO::Console::format(total_force) + "."));
+    Common::Solvers::LoadProgramParameters::check_load_magnitude(
+      "Loading: 'Total force'",
+      total_force,
+      "N");
   }
 
 

@@ -1,6 +1,5 @@
 #include "parameters.h"
 
-#include <common/io/console.h>
 #include <common/io/parameter_values.h>
 #include <common/solvers/load_program.h>
 
@@ -222,13 +221,10 @@ namespace Punch3d
     prm.leave_subsection();
     AssertThrow(pressure > 0.,
                 ExcMessage("Loading: 'Pressure' must be positive."));
-    // The residuals are relative to the load, as in a load program.
-    using Program = Common::Solvers::LoadProgramParameters;
-    AssertThrow(pressure >= Program::min_channel_value &&
-                  pressure <= Program::max_channel_value,
-                ExcMessage("Loading: 'Pressure' must lie between 1e-9 and "
-                           "1e9 MPa, got " +
-                           Common::IO::Console::format(pressure) + "."));
+    Common::Solvers::LoadProgramParameters::check_load_magnitude(
+      "Loading: 'Pressure'",
+      pressure,
+      "MPa");
   }
 
 

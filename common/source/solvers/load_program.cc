@@ -258,6 +258,19 @@ namespace Common
 
 
 
+    void
+    LoadProgramParameters::check_load_magnitude(const std::string &entry,
+                                                const double       value,
+                                                const std::string &unit)
+    {
+      AssertThrow(std::abs(value) >= min_channel_value &&
+                    std::abs(value) <= max_channel_value,
+                  ExcMessage(entry + " must lie between 1e-9 and 1e9 " + unit +
+                             ", got " + IO::Console::format(value) + "."));
+    }
+
+
+
     LoadSteppingStatistics
     run_load_program(const LoadProgramParameters &program,
                      const LoadStepCallbacks     &callbacks,

@@ -102,6 +102,20 @@ namespace Common
       static constexpr double max_channel_value = 1e9;
 
       /**
+       * @brief Throw a one-line message unless the magnitude of @p value,
+       * a load given outside a load program (a pressure, a force), lies in
+       * [min_channel_value, max_channel_value]: the residuals are relative
+       * to the load, as they are for a channel.
+       * @param[in] entry The entry as the message names it, e.g.
+       * "Loading: 'Pressure'".
+       * @param[in] unit The entry's unit, e.g. "MPa".
+       */
+      static void
+      check_load_magnitude(const std::string &entry,
+                           const double       value,
+                           const std::string &unit);
+
+      /**
        * @brief Declare subsection "Load program" with "Number of stages",
        * "Minimum increment" and the subsections "Stage 1" to
        * "Stage <max_stages>", each with "Name", "Number of steps" and one
