@@ -820,8 +820,46 @@ namespace Common
       update_geometry();
       contact_enforcement->begin_step();
       Solvers::NewtonCallbacks callbacks;
+      // The first iteration of a solve carries the load increment: its
+      // active set may be iterated on its own linearisation, each solve
+      // from the same state (see NonlinearSolverParameters).
+      const bool first_iteration_sets =
+        nonlinear_solver_parameters.max_first_iteration_solves > 1 &&
+        uses_linearized_tractions();
+      unsigned int n_extra_first_iteration_solves = 0;
+      bool         first_iteration                = true;
       callbacks.assemble_solve_and_update = [&](const double tolerance) {
-        return assemble_and_solve(state, load, tolerance);
+        if (!first_iteration_sets || !first_iteration)
+          return assemble_and_solve(state, load, tolerance);
+        first_iteration                               = false;
+        const TrilinosWrappers::MPI::Vector start     = solution_owned;
+        double                              increment = 0.;
+        // Every set of these solves counts as seen: they share one
+        // linearisation, on which a revisited set is a cycle.
+        contact_enforcement->restart_cycle_detection();
+        for (unsigned int i = 1;; ++i)
+          {
+            increment = assemble_and_solve(state, load, tolerance);
+            if (i == nonlinear_solver_parameters.max_first_iteration_solves)
+              break;
+            // The pressures of the linearised step and the gaps at its end.
+            contact_enforcement->update_pressures(solution,
+                                                  linearized_residual);
+            const auto         t = std::chrono::steady_clock::now();
+            const unsigned int n_changed =
+              contact_enforcement->update_active_set(solution, -1., false);
+            solve_times.active_set_update += IO::seconds_since(t);
+            verbose << "      Solve " << i
+                    << " of the first iteration: " << n_changed
+                    << " active-set changes" << std::endl;
+            if (n_changed == 0 || contact_enforcement->is_cycling())
+              break;
+            ++n_extra_first_iteration_solves;
+            solution_owned = start;
+            solution       = solution_owned;
+            update_geometry();
+          }
+        return increment;
       };
       // In a nonlinear problem the iterate depends on the iteration's
       // progress, and a set revisited after it is no cycle.
@@ -882,6 +920,7 @@ namespace Common
       // in a linear one the model is at fault.
       const auto newton = [&]() {
         Solvers::NewtonStatistics result;
+        first_iteration = true;
         try
           {
             result = Solvers::solve_newton(nonlinear_solver_parameters,
@@ -1040,6 +1079,8 @@ namespace Common
         }
       solve_times.newton += IO::seconds_since(start);
       solve_times.contact_cpu += IO::process_cpu_seconds() - cpu_start;
+      statistics.n_extra_first_iteration_solves =
+        n_extra_first_iteration_solves;
       return statistics;
     }
 

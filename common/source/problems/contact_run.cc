@@ -46,7 +46,9 @@ namespace Common
         .set("failed_attempt_iterations_per_step",
              stepping.failed_attempt_iterations)
         .set("n_steps_converged_on_step_tolerance",
-             stepping.n_converged_on_step);
+             stepping.n_converged_on_step)
+        .set("first_iteration_extra_solves",
+             stepping.n_extra_first_iteration_solves);
       return newton;
     }
 

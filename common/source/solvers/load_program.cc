@@ -295,6 +295,8 @@ namespace Common
               const LoadState state =
                 program.state(target == 1. ? s + 1. : s + target);
               const NewtonStatistics newton = callbacks.solve(state);
+              statistics.n_extra_first_iteration_solves +=
+                newton.n_extra_first_iteration_solves;
               if (newton.converged)
                 {
                   ++step;

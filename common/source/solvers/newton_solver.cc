@@ -96,6 +96,25 @@ namespace Common
           "converging step (a few tens in forming). 0: no bound. "
           "Dimensionless.");
         prm.declare_entry(
+          "Active-set solves in the first iteration",
+          "1",
+          Patterns::Integer(1, 100),
+          "Lagrange multipliers in a nonlinear problem: the first Newton "
+          "iteration of a load step carries its load increment and decides "
+          "most of its active set. Above 1, that iteration iterates the set "
+          "on its own linearisation (sequential quadratic programming): the "
+          "step is solved again from the same state with the set that the "
+          "pressures of the linearised residual and the gaps at the "
+          "solve's end give, until the set repeats or this many solves are "
+          "made; the iteration then goes on from the last solve with the "
+          "semismooth update. The set is then judged on a consistent "
+          "linear model instead of an iterate far from equilibrium. Each "
+          "further solve costs an assembly and a linear solve, and is "
+          "counted in summary.json (newton/first_iteration_extra_solves), "
+          "not as a Newton iteration. 1: one solve, the semismooth method "
+          "alone. Ignored where the problem is linear or penalized. "
+          "Dimensionless.");
+        prm.declare_entry(
           "Step test residual bound",
           "1e-6",
           Patterns::Double(0.),
@@ -129,6 +148,8 @@ namespace Common
         extrapolate_initial_guess = prm.get_bool("Extrapolate initial guess");
         stabilization_factor      = prm.get_double("Stabilization factor");
         divergence_bound          = prm.get_double("Divergence bound");
+        max_first_iteration_solves =
+          prm.get_integer("Active-set solves in the first iteration");
       }
       prm.leave_subsection();
     }

@@ -193,6 +193,9 @@ namespace Common
        * step; the same length as newton_iterations. */
       std::vector<unsigned int> failed_attempt_iterations;
       unsigned int              n_cutbacks = 0;
+      /** Solves of first iterations beyond their first, over every
+       * attempt (NewtonStatistics::n_extra_first_iteration_solves). */
+      unsigned int n_extra_first_iteration_solves = 0;
       /** Accepted steps whose Newton iteration converged on the step test
        * (equilibrium residual at round-off above its tolerance). */
       unsigned int n_converged_on_step = 0;

@@ -55,6 +55,10 @@ namespace Common
       /** An iterate whose relative equilibrium residual exceeds this
        * fails the step at once (0: no bound). */
       double divergence_bound = 0.;
+      /** Solves of the first Newton iteration of a solve, at most, each
+       * with the active set that the previous one's linearisation gives
+       * (1: one solve, the semismooth update on the nonlinear iterate). */
+      unsigned int max_first_iteration_solves = 1;
     };
 
     /**
@@ -130,6 +134,11 @@ namespace Common
        * multipliers (augmented Lagrangian); their iterations are counted
        * in n_iterations. */
       unsigned int n_augmentations = 0;
+      /** Solves of first iterations beyond their first
+       * (NonlinearSolverParameters::max_first_iteration_solves), each an
+       * assembly and a linear solve at the same state; not counted in
+       * n_iterations. */
+      unsigned int n_extra_first_iteration_solves = 0;
     };
 
     /**
