@@ -295,6 +295,7 @@ def robustness_section(results):
             ("newton_iterations", "Newton"), ("max_iterations_per_step", "most per step"),
             ("max_with_cutbacks", "most per step, cutbacks counted"),
             ("failed_attempt_iterations", "in failed attempts"),
+            ("first_iteration_extra_solves", "extra first-iteration solves"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
             ("change_vs_coarse_percent", "headline change [%]"),
             ("change_against", "against"), ("detail", "detail")])

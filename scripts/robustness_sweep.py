@@ -451,6 +451,8 @@ def main():
                    "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
                    "max_with_cutbacks": most_per_step(newton) if newton else "",
                    "failed_attempt_iterations": newton.get("failed_attempt_iterations", ""),
+                   "first_iteration_extra_solves":
+                       newton.get("first_iteration_extra_solves", ""),
                    "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
                    "headline": "" if headline is None else headline,
                    "change_vs_coarse_percent": change, "change_against": against,
@@ -465,7 +467,7 @@ def main():
             rows.append({"app": app, "variation": name, "status": "not available",
                          "newton_iterations": "", "max_iterations_per_step": "",
                          "max_with_cutbacks": "", "failed_attempt_iterations": "",
-                         "cutbacks": "", "wall_time_s": "", "headline": "",
+                         "first_iteration_extra_solves": "", "cutbacks": "", "wall_time_s": "", "headline": "",
                          "change_vs_coarse_percent": "", "change_against": "",
                          "detail": why, "case": ""})
     if args.list:
