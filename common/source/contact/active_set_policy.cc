@@ -657,8 +657,6 @@ namespace Common
       const FrictionModel<dim>               &friction,
       const ContactState<dim>                &state) const
     {
-      if (!normal.has_multipliers())
-        return 0.;
       // The owned nodes' share, summed over the ranks.
       const RowPartition &rows = state.rows();
       double              sum  = 0.;
@@ -668,8 +666,11 @@ namespace Common
             continue;
           const auto [C_n, C_t] =
             complementarity(j, nodes, normal, friction, state);
-          sum +=
-            (C_n * C_n + C_t.norm_square()) * nodes[j].weight * nodes[j].weight;
+          // A penalty carries no tangential multiplier: its norm is the
+          // departure from the normal law alone.
+          const double C_t_squared =
+            normal.has_multipliers() ? C_t.norm_square() : 0.;
+          sum += (C_n * C_n + C_t_squared) * nodes[j].weight * nodes[j].weight;
         }
       if (rows.is_distributed())
         sum = Utilities::MPI::sum(sum, rows.communicator());

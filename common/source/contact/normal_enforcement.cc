@@ -474,9 +474,16 @@ namespace Common
     double
     PenaltyEnforcement<dim>::complementarity(const double pressure,
                                              const double gap,
-                                             const double c) const
+                                             const double) const
     {
-      return NormalContactLaw::complementarity(pressure, gap, c);
+      // update_tractions(): a closed node carries -k g, an open one 0. A
+      // closed node that pulls (g > 0) or an open one that penetrates
+      // (g < 0) departs from the penalty law by k |g|.
+      if (pressure < 0.)
+        return pressure;
+      if (pressure == 0. && gap < 0.)
+        return stiffness * gap;
+      return 0.;
     }
 
 

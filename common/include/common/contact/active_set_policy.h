@@ -166,7 +166,9 @@ namespace Common
 
       /** @brief Norm of the normal and tangential complementarity
        * functions weighted by D_j (N) over the paired nodes of all ranks;
-       * zero without multipliers (penalty). Collective. */
+       * with a penalty, of the nodes' departures from the penalty law
+       * (PenaltyEnforcement::complementarity()), the forces that the
+       * active set misplaces. Collective. */
       double
       complementarity_norm(const std::vector<NodeKinematics<dim>> &nodes,
                            const NormalEnforcement<dim>           &normal,

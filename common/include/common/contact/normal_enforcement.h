@@ -278,8 +278,12 @@ namespace Common
                 const double gap,
                 const double c) const override;
 
-      /** @brief NormalContactLaw::complementarity() of the penalty
-       * pressure: c|g| on a penetrating node, used only to rank nodes. */
+      /** @brief The departure of the node's force from the penalty law,
+       * given @p pressure from update_tractions(): -k g on a closed node
+       * whose gap is positive (it pulls), k g on an open node that
+       * penetrates, 0 otherwise (MPa). Its norm measures how far the
+       * active set is from the law, in the units of the equilibrium
+       * residual; it ranks the nodes when the active set cycles. */
       double
       complementarity(const double pressure,
                       const double gap,
