@@ -14,40 +14,10 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-. "$(dirname "$0")/../run_case.sh"
+. "$(dirname "$0")/partial_stroke.sh"
 for extrapolate in false true; do
-  run_case "$app" "$work" "extrapolate_$extrapolate" "$(cat <<PRM
-include $src/parameters/sheet_forming/sheet_forming_mu01342.prm
-subsection Mesh
-  set Number of cells through the thickness = 2
-  set Number of cells along the length      = 30
-end
-subsection Load program
-  subsection Stage 1
-    set Number of steps    = 8
-    set Punch displacement = 4
-  end
-  subsection Stage 2
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 4
-    set Die displacement   = 0
-  end
-  subsection Stage 3
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 4
-    set Die displacement   = 0
-  end
-end
-subsection Release
-  set Release stage = 0
-end
-subsection Nonlinear solver
-  set Extrapolate initial guess = $extrapolate
-end
-PRM
-)"
+  partial_stroke "$app" "$src" "$work" "extrapolate_$extrapolate" 8 4 \
+    "  set Extrapolate initial guess = $extrapolate"
 done
 
 python3 - "$work" <<'PY'

@@ -15,40 +15,10 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-. "$(dirname "$0")/../run_case.sh"
+. "$(dirname "$0")/partial_stroke.sh"
 for solves in 1 10; do
-  run_case "$app" "$work" "solves_$solves" "$(cat <<PRM
-include $src/parameters/sheet_forming/sheet_forming_mu01342.prm
-subsection Mesh
-  set Number of cells through the thickness = 2
-  set Number of cells along the length      = 30
-end
-subsection Load program
-  subsection Stage 1
-    set Number of steps    = 12
-    set Punch displacement = 6
-  end
-  subsection Stage 2
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 6
-    set Die displacement   = 0
-  end
-  subsection Stage 3
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 6
-    set Die displacement   = 0
-  end
-end
-subsection Release
-  set Release stage = 0
-end
-subsection Nonlinear solver
-  set Active-set solves in the first iteration = $solves
-end
-PRM
-)"
+  partial_stroke "$app" "$src" "$work" "solves_$solves" 12 6 \
+    "  set Active-set solves in the first iteration = $solves"
 done
 
 python3 - "$work" <<'PY'
