@@ -32,7 +32,8 @@ follow the robustness issue: friction coefficient mu in {0, 0.05, 0.3, 1, 5}
 where the case has friction; the stiffness ratio of the two bodies from
 1e-4 to 1e4 (where there are two deformable bodies); 1, 2, 5 and 50 load
 steps; a first step of 1e-6 of the load; Q1 and Q2; penalty enforcement at
-three stiffnesses a decade apart; non-matching meshes (cell size ratios
+10, 100 and 1000 E/h (E the Young's modulus of the softer body at the
+contact, h the smallest contact cell of the coarse case); non-matching meshes (cell size ratios
 1/8 to 8 across the contact, Mesh/Contact size ratio); interior nodes moved
 at random by up to 30 % of the cell (Mesh/Interior node perturbation);
 initial gaps and overlaps of 1e-8 and 1e-3 of the smallest contact cell of
@@ -123,15 +124,23 @@ def degree(p):
     return [("Mesh", "Element degree", str(p))]
 
 
-def penalty(stiffness):
+def penalty(factor, modulus):
+    """Penalty enforcement with the stiffness factor E/h (MPa/mm): E the
+    Young's modulus of the softer body at the contact (MPa), h the smallest
+    cell at the contact of the coarse case (PER_CELL)."""
     return [("Contact", "Enforcement", "penalty"),
-            ("Contact", "Penalty stiffness", f"{stiffness:g}")]
+            ("Contact", "Penalty stiffness", (factor * modulus, PER_CELL))]
 
 
 MUS = [0, 0.05, 0.3, 1, 5]
 RATIOS = [1e-4, 1e-2, 1, 1e2, 1e4]
 STEPS = [1, 2, 5, 50]
-PENALTIES = [1e5, 1e6, 1e7]
+# Penalty stiffnesses a decade apart in units of E/h, the stiffness of a
+# layer of the softer body one contact cell thick: a penalty means the same
+# to rubber (E = 10 MPa) as to aluminium (70 GPa) only in those units
+# (10 E/h is Abaqus's default "10 times the underlying element's
+# stiffness"; at 1000 E/h the penetration is 1e-3 of the cell's strain).
+PENALTY_FACTORS = [10, 100, 1000]
 
 SIZE_RATIOS = ["1/8", "1/2", "2", "8"]
 GAPS = [1e-8, -1e-8, 1e-3, -1e-3]
@@ -139,6 +148,9 @@ GAPS = [1e-8, -1e-8, 1e-3, -1e-3]
 # the smallest cell at the contact of the application's first run (the
 # coarse case without variation, "coarse case").
 CELL = "cells at the contact"
+# The placeholder of a value divided by that cell (a penalty factor times
+# E, divided by h).
+PER_CELL = "MPa over the smallest cell at the contact"
 
 
 def mesh_variations():
@@ -159,7 +171,7 @@ def gap_variations(path, key, sign=1.):
 
 
 def standard(first=None, second=None, channel="Load factor", value=1., n_steps=1,
-             with_rigid=(), gap=()):
+             with_rigid=(), gap=(), modulus=70000.):
     """The variations of an application with a load factor: the coarse case
     itself, friction, stiffness ratio (first/second: the material
     subsections of the two bodies), load steps, a tiny first step, Q1/Q2,
@@ -173,10 +185,17 @@ def standard(first=None, second=None, channel="Load factor", value=1., n_steps=1
     table += [(f"{n} load steps", steps(n)) for n in STEPS]
     table.append(("first step 1e-6 of the load", tiny_first_step(channel, value, n_steps)))
     table += [(f"Q{p}", degree(p)) for p in (1, 2)]
-    table += [(f"penalty {k:g} MPa/mm", penalty(k)) for k in PENALTIES]
+    table += [(f"penalty {f:g} E/h", penalty(f, modulus)) for f in PENALTY_FACTORS]
     table += mesh_variations() + list(gap)
     return table
 
+
+# Young's moduli of the softer body at the contact (MPa), the E of the
+# penalty factors: aluminium (the block, foundation and plate of
+# cgs_roller, punch3d and loaded_pin: standard()'s default), the sheet's
+# aluminium and the strip's rubber.
+SHEET_MODULUS = 70500.
+RUBBER_MODULUS = 10.
 
 VARIATIONS = {
     "cgs_roller": {
@@ -218,13 +237,15 @@ VARIATIONS = {
            ("Q1, displacement element", [("Solid", "Element technology",
                                           "displacement")])]
         # Penalty enforcement is frictionless only.
-        + [(f"penalty {k:g} MPa/mm, mu 0", penalty(k) + friction(0)) for k in PENALTIES]
+        + [(f"penalty {f:g} E/h, mu 0", penalty(f, SHEET_MODULUS) + friction(0))
+           for f in PENALTY_FACTORS]
         + [("interior nodes perturbed 30 %",
             [("Mesh", "Interior node perturbation", "0.3")])],
-        # The stiffest penalty fails cleanly (an iterate carries a node
-        # through the die shoulder) after about 3 minutes of iterations and
-        # cutbacks on one core.
-        "time_limits": {f"penalty {PENALTIES[-1]:g} MPa/mm, mu 0": 400.},
+        # The two stiffer penalties fail cleanly after some 2 and 4 minutes
+        # of iterations and cutbacks on one core (100 E/h: the set
+        # alternates between two equilibria at 80 % of the stroke; 1000
+        # E/h: an iterate carries a node through the die).
+        "time_limits": {f"penalty {f:g} E/h, mu 0": 400. for f in PENALTY_FACTORS[1:]},
         "not_available": [
             ("non-matching meshes", "the tools are rigid analytic surfaces: "
              "there is one mesh"),
@@ -266,9 +287,10 @@ VARIATIONS = {
              ("Load program/Stage 4", "Number of steps", "1"),
              ("Load program/Stage 4", "Roller angle", "2")])]
         + [(f"Q{p}", degree(p)) for p in (1, 2)]
-        + [(f"penalty {k:g} MPa/mm, mu 0",
-            penalty(k) + friction(0) + [("Supports", "Bottom free in x from stage", "0")])
-           for k in PENALTIES],
+        + [(f"penalty {f:g} E/h, mu 0",
+            penalty(f, RUBBER_MODULUS) + friction(0)
+            + [("Supports", "Bottom free in x from stage", "0")])
+           for f in PENALTY_FACTORS],
         "not_available": [
             ("stiffness ratio, rigid bodies", "the roller is rigid (the specification's "
              "S2 model); an elastic roller is not built yet"),
@@ -282,13 +304,15 @@ VARIATIONS = {
 
 def resolve(entries, cell_size):
     """entries with the values (factor, CELL) replaced by factor times
-    cell_size (mm); None if one needs cell_size and it is unknown."""
+    cell_size (mm) and (value, PER_CELL) by value divided by cell_size;
+    None if one needs cell_size and it is unknown."""
     resolved = []
     for path, key, value in entries:
         if isinstance(value, tuple):
             if cell_size is None:
                 return None
-            value = f"{value[0] * cell_size:.17g}"
+            scaled = value[0] / cell_size if value[1] == PER_CELL else value[0] * cell_size
+            value = f"{scaled:.17g}"
         resolved.append((path, key, value))
     return resolved
 
