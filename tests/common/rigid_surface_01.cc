@@ -6,7 +6,9 @@
 //   below and beside the fillet, and inside the punch, against their
 //   closed forms (1e-12 mm);
 // - the outward normal (0, -1) under the flat face and radial on the
-//   fillet;
+//   fillet, also 1e-9 mm from the profile on either side (to 1e-13: the
+//   normal of a closed contact node against a curved tool); beyond a
+//   convex corner the direction from the corner;
 // - vertical rays from y = H - 1 mm meet the surface at y = H on the flat
 //   face and at y = H + rho - sqrt(rho^2 - (r - b)^2) under the fillet
 //   (1e-10 mm), the height a small-strain contact gap is measured by;
@@ -93,6 +95,33 @@ main()
     check("fillet: closest point, distance, radial normal",
           c.point.distance(centre + rho * e) + std::abs(c.distance - 2.) +
             (c.normal - e).norm(),
+          1e-12);
+  }
+  // 1e-9 mm from the fillet and from the flat face, outside and inside
+  // (a closed contact node): the normal is the profile's own to
+  // round-off, not the direction of x - p, whose rounding error at these
+  // coordinates (1e-14 mm) would turn it by some 1e-5.
+  {
+    double error = 0.;
+    for (const double offset : {1e-9, -1e-9})
+      {
+        const double       angle = -1.1;
+        const Tensor<1, 2> e({std::cos(angle), std::sin(angle)});
+        const Point<2>     centre(b, H + rho);
+        const auto c = surface.closest_point(centre + (rho + offset) * e);
+        error        = std::max(error, (c.normal - e).norm());
+        const auto f = surface.closest_point(Point<2>(13.7, H - offset));
+        error = std::max(error, (f.normal - Tensor<1, 2>({0., -1.})).norm());
+      }
+    check("1e-9 mm from the profile: the profile's normal", error, 1e-13);
+  }
+  // Beyond the start of the flat face (a convex corner): the normal is the
+  // direction from the corner to the point.
+  {
+    const auto c = surface.closest_point(Point<2>(-3., H - 4.));
+    check("beyond a convex corner: distance, normal towards the point",
+          c.point.distance(Point<2>(0., H)) + std::abs(c.distance - 5.) +
+            (c.normal - Tensor<1, 2>({-0.6, -0.8})).norm(),
           1e-12);
   }
   // Beside the side face.

@@ -58,18 +58,23 @@ namespace Common
       AssertThrow(!pieces.empty(), ExcMessage("Rigid profile: no segments."));
       ClosestPoint best;
       double       best_distance = std::numeric_limits<double>::infinity();
+      // Whether the closest point is an end of its piece, where x lies
+      // beyond the piece (a convex corner).
+      bool best_at_end = false;
       for (const auto &piece : pieces)
         {
           Point<2>     p;
           Tensor<1, 2> tangent;
+          bool         at_end = false;
           if (!piece.is_arc)
             {
               const Tensor<1, 2> e      = piece.end - piece.start;
               const double       length = e.norm();
-              const double       s =
-                std::clamp((x - piece.start) * e / (length * length), 0., 1.);
-              p       = piece.start + s * e;
-              tangent = e / length;
+              const double s_raw = (x - piece.start) * e / (length * length);
+              const double s     = std::clamp(s_raw, 0., 1.);
+              at_end             = s != s_raw;
+              p                  = piece.start + s * e;
+              tangent            = e / length;
             }
           else
             {
@@ -84,7 +89,8 @@ namespace Common
                 angle += 2. * numbers::PI;
               while (angle > mid + numbers::PI)
                 angle -= 2. * numbers::PI;
-              angle = std::clamp(angle, lo, hi);
+              at_end = angle < lo || angle > hi;
+              angle  = std::clamp(angle, lo, hi);
               const Tensor<1, 2> radial({std::cos(angle), std::sin(angle)});
               p = piece.centre + piece.radius * radial;
               // Counterclockwise tangent, reversed for a clockwise arc.
@@ -95,6 +101,7 @@ namespace Common
           if (d < best_distance)
             {
               best_distance = d;
+              best_at_end   = at_end;
               best.point    = p;
               best.normal   = Tensor<1, 2>({tangent[1], -tangent[0]});
             }
@@ -102,13 +109,18 @@ namespace Common
       // The sign from the side of the closest piece; at a point exactly on
       // the profile the distance is zero either way.
       best.distance = (x - best.point) * best.normal;
-      // Away from the profile (beyond a convex corner) the normal is the
-      // direction to x, which keeps the distance function smooth.
-      if (best_distance > 1e-12 * (1. + x.norm()))
+      // Beyond a convex corner the normal is the direction from the corner
+      // to x and the distance the distance to the corner, which keeps the
+      // distance function smooth. Elsewhere it is the
+      // piece's own normal at the point: x - p has that direction too, but
+      // for a point near the profile (a closed contact node) its rounding
+      // error would turn the normal by up to 1e-16 |x| / |x - p|.
+      if (best_at_end && best_distance > 1e-12 * (1. + x.norm()))
         {
           const Tensor<1, 2> direction = (x - best.point) / best_distance;
           best.normal =
             best.distance >= 0. ? direction : Tensor<1, 2>(-direction);
+          best.distance = (x - best.point) * best.normal;
         }
       return best;
     }
