@@ -240,7 +240,10 @@ VARIATIONS = {
         + [(f"penalty {f:g} E/h, mu 0", penalty(f, SHEET_MODULUS) + friction(0))
            for f in PENALTY_FACTORS]
         + [("interior nodes perturbed 30 %",
-            [("Mesh", "Interior node perturbation", "0.3")])],
+            [("Mesh", "Interior node perturbation", "0.3")])]
+        + [("nodal tool gap", [("Contact", "Rigid tool gap", "nodal")]),
+           ("nodal tool gap, mu 0",
+            [("Contact", "Rigid tool gap", "nodal")] + friction(0))],
         # The two stiffer penalties fail cleanly after some 2 and 4 minutes
         # of iterations and cutbacks on one core (100 E/h: the set
         # alternates between two equilibria at 80 % of the stroke; 1000
@@ -290,7 +293,8 @@ VARIATIONS = {
         + [(f"penalty {f:g} E/h, mu 0",
             penalty(f, RUBBER_MODULUS) + friction(0)
             + [("Supports", "Bottom free in x from stage", "0")])
-           for f in PENALTY_FACTORS],
+           for f in PENALTY_FACTORS]
+        + [("nodal tool gap", [("Contact", "Rigid tool gap", "nodal")])],
         "not_available": [
             ("stiffness ratio, rigid bodies", "the roller is rigid (the specification's "
              "S2 model); an elastic roller is not built yet"),
