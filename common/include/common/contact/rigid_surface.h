@@ -61,8 +61,13 @@ namespace Common
               const double            start_angle,
               const double            end_angle);
 
-      /** @brief The closest point of the profile to @p x. Throws if the
-       * profile is empty. */
+      /** @brief The closest point of the profile to @p x, with the
+       * profile's outward normal there and the signed distance of @p x
+       * along it (mm). Beyond a convex corner (the closest point an end of
+       * its piece) the normal is the unit vector from the corner to @p x
+       * (reversed inside the body) and the distance the distance to the
+       * corner, so that the distance function stays continuously
+       * differentiable. Throws if the profile is empty. */
       ClosestPoint
       closest_point(const dealii::Point<2> &x) const;
 
