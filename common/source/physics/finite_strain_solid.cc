@@ -1,3 +1,4 @@
+#include <common/io/console.h>
 #include <common/physics/finite_strain_solid.h>
 
 #include <deal.II/base/mpi.h>
@@ -112,8 +113,11 @@ namespace Common
           Patterns::Double(),
           "Exactly incompressible laws: the penalty kappa of the augmented "
           "Lagrangian as a multiple of the shear modulus. Dimensionless, "
-          "positive; it changes the number of augmentations, not the "
-          "converged answer.");
+          "positive and at most 1e6; it changes the number of "
+          "augmentations, not the converged answer. Larger factors put the "
+          "round-off of the penalty term (about the factor times 1e-16, "
+          "relative) near the Newton tolerance: the coarse rolling case "
+          "converges up to 1e7 and not at 1e8.");
         prm.declare_entry(
           "Incompressibility tolerance",
           "1e-8",
@@ -150,9 +154,10 @@ namespace Common
         max_augmentations = prm.get_integer("Maximum augmentations");
       }
       prm.leave_subsection();
-      AssertThrow(penalty_factor > 0.,
+      AssertThrow(penalty_factor > 0. && penalty_factor <= 1e6,
                   ExcMessage("Solid: 'Incompressibility penalty factor' "
-                             "must be positive."));
+                             "must be positive and at most 1e6, got " +
+                             IO::Console::format(penalty_factor) + "."));
       AssertThrow(incompressibility_tolerance > 0.,
                   ExcMessage("Solid: 'Incompressibility tolerance' must "
                              "be positive."));
