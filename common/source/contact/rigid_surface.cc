@@ -111,10 +111,10 @@ namespace Common
       best.distance = (x - best.point) * best.normal;
       // Beyond a convex corner the normal is the direction from the corner
       // to x and the distance the distance to the corner, which keeps the
-      // distance function smooth. Elsewhere it is the
-      // piece's own normal at the point: x - p has that direction too, but
-      // for a point near the profile (a closed contact node) its rounding
-      // error would turn the normal by up to 1e-16 |x| / |x - p|.
+      // distance function smooth. Elsewhere it is the piece's own normal at
+      // the point: x - p has that direction too, but for a point near the
+      // profile (a closed contact node) its rounding error would turn the
+      // normal by up to 1e-16 |x| / |x - p|.
       if (best_at_end && best_distance > 1e-12 * (1. + x.norm()))
         {
           const Tensor<1, 2> direction = (x - best.point) / best_distance;
