@@ -16,7 +16,8 @@
  * there until none changes; a held set whose equilibrium residual stays
  * above both stays held; once a change leads back to a set held before,
  * sets are held to the tolerance, and the loop stops when an equilibrium
- * returns to the one before the last (two sets trading places). With
+ * returns to the one before the last (two sets trading places) or
+ * reaches an equilibrium for the third time (a cycle of more sets). With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -100,16 +101,18 @@ namespace
    * 0; or, if @p complementarity is given, its entry for the number of
    * one-point updates made so far (the last entry repeats). If
    * @p revisits is given, the problem reports whether the k-th one-point
-   * update led back to a set held before (the last entry repeats). */
+   * update led back to a set held before (the last entry repeats).
+   * @p max_iterations bounds the loop. */
   NewtonStatistics
   run_held(const std::vector<double>       &equilibrium,
            const std::vector<unsigned int> &one_point_changes,
            std::vector<std::string>        &calls,
            const std::vector<double>       &complementarity = {},
-           const std::vector<bool>         &revisits        = {})
+           const std::vector<bool>         &revisits        = {},
+           const unsigned int               max_iterations  = 12)
   {
     NonlinearSolverParameters parameters;
-    parameters.max_iterations = 12;
+    parameters.max_iterations = max_iterations;
     parameters.tolerance      = 1e-10;
     parameters.step_tolerance = 0.;
 
@@ -278,6 +281,28 @@ main()
                     {false, true}));
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
+  }
+
+  // Three sets in a cycle (the one-change rule leads A to B, B to C and
+  // C back to A, as the wrapped nodes of a bent strip can): held to the
+  // tolerance from the second change on, the equilibria of iterations 2,
+  // 4, 6, 8, 10 and 12 have the complementarity residuals a, b, c, a, b,
+  // c. No two consecutive ones repeat the one before the last; the loop
+  // stops at iteration 14, where a is reached for the third time, instead
+  // of running to its limit (16).
+  {
+    std::vector<std::string> calls;
+    std::vector<double>      equilibrium{1e-3};
+    for (unsigned int it = 2; it <= 16; ++it)
+      equilibrium.push_back(it % 2 == 0 ? 1e-12 : 1e-5);
+    report("three equilibria in a cycle",
+           run_held(equilibrium,
+                    {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1},
+                    calls,
+                    {1e-4, 5e-4, 2e-4, 3e-4, 1e-4, 2e-4, 3e-4, 1e-4},
+                    {false, true},
+                    16));
+    deallog << "  calls " << calls.size() << std::endl;
   }
 
   // Inexact Newton with factor 0.1: iteration 1 solved fully, later ones

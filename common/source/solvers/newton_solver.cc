@@ -225,20 +225,33 @@ namespace Common
               residual.complementarity >= parameters.tolerance)
             {
               equilibria.push_back(residual.complementarity);
-              const std::size_t n = equilibria.size();
-              if (n >= 3 && std::abs(equilibria[n - 1] - equilibria[n - 3]) <=
-                              1e-6 * equilibria[n - 1])
+              const std::size_t n    = equilibria.size();
+              const auto        same = [&](const double e) {
+                return std::abs(e - equilibria[n - 1]) <=
+                       1e-6 * equilibria[n - 1];
+              };
+              std::string failure;
+              if (n >= 3 && same(equilibria[n - 3]))
+                failure = "the active set alternates between two equilibria "
+                          "(complementarity residuals " +
+                          IO::Console::format(equilibria[n - 2]) + " and " +
+                          IO::Console::format(equilibria[n - 1]) +
+                          "): no contact state has both the pressures and "
+                          "the gaps of the right sign";
+              // An equilibrium reached for the third time: the changes
+              // between run in a cycle of more than two sets.
+              else if (std::count_if(equilibria.begin(),
+                                     equilibria.end() - 1,
+                                     same) >= 2)
+                failure = "the active set cycles among equilibria (one "
+                          "reached three times, complementarity residual " +
+                          IO::Console::format(equilibria[n - 1]) + ")";
+              if (!failure.empty())
                 {
                   statistics.n_iterations = it;
                   statistics.residuals.push_back(residual);
                   statistics.active_set_changes.push_back(0);
-                  statistics.failure =
-                    "the active set alternates between two equilibria "
-                    "(complementarity residuals " +
-                    IO::Console::format(equilibria[n - 2]) + " and " +
-                    IO::Console::format(equilibria[n - 1]) +
-                    "): no contact state has both the pressures and the "
-                    "gaps of the right sign";
+                  statistics.failure = failure;
                   return statistics;
                 }
             }
