@@ -104,10 +104,10 @@ namespace Common
        * (revisits_held_set()), each set is held until the tolerance: the
        * equilibria are then compared to detect an alternation between
        * two, or a cycle of more (an equilibrium reached a third time),
-       * which fails the step. A nonlinear problem judges its sets on states out
-       * of equilibrium, and a bending body (whose contact stiffness is no
-       * M-matrix) may cycle under the semismooth rule even from equilibria;
-       * one change per equilibrium does not. */
+       * either of which fails the step. A nonlinear problem judges its
+       * sets on states out of equilibrium, and a bending body (whose
+       * contact stiffness is no M-matrix) may cycle under the semismooth
+       * rule even from equilibria; one change per equilibrium does not. */
       std::function<void()> restart_cycle_detection;
       /** Apply the active-set rule to the one point with the largest
        * violation; returns the number of changed points (0 or 1). */
