@@ -171,18 +171,20 @@ namespace Common
       // Rows integrated once, in the reference configuration, never gain a
       // partner: without one the bodies cannot touch.
       const auto &contact = parameters.contact;
-      AssertThrow(problem.contact_geometry().is_current_configuration() ||
-                    n_paired_nodes(problem) > 0,
-                  ExcMessage(
-                    "Contact: no node of the secondary surface ('Secondary "
-                    "boundary id' = " +
-                    std::to_string(contact.secondary_boundary_id) + ", " +
-                    std::to_string(problem.coupling().n_rows()) +
-                    " nodes) faces the primary surface within 'Search "
-                    "distance': the bodies cannot come into contact (a face "
-                    "pairs only if all of it does: faces larger than the "
-                    "distance may need more 'Number of contact "
-                    "refinements')."));
+      AssertThrow(
+        problem.contact_geometry().is_current_configuration() ||
+          n_paired_nodes(problem) > 0,
+        ExcMessage("Contact: no node of the secondary surface ('Secondary "
+                   "boundary id' = " +
+                   std::to_string(contact.secondary_boundary_id) + ", " +
+                   std::to_string(problem.coupling().n_rows()) +
+                   " nodes) faces the primary surface ('Primary boundary "
+                   "id' = " +
+                   std::to_string(contact.primary_boundary_id) +
+                   ") within 'Search distance': the bodies cannot come into "
+                   "contact (a face pairs only if all of it does: faces larger "
+                   "than the distance may need more 'Number of contact "
+                   "refinements')."));
       if (parameters.run_control.dry_run)
         {
           console.stream() << "Dry run: parameters, mesh and contact pairing "
