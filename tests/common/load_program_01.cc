@@ -5,7 +5,10 @@
  * beside the iterations of each accepted attempt, the iterations of the
  * failed attempts before it. summary.json's Newton record
  * (Problems::newton_summary()) reports the most iterations of a step with
- * and without those failed attempts.
+ * and without those failed attempts, and the active-set solves of each
+ * step (first and later iterations, failed attempts included) beside
+ * them: the most linear solves of a step are its iterations with cutbacks
+ * plus those solves (step 1: 15 + 1 + 2 + 3 = 21; step 2: 4 + 10 = 14).
  */
 
 #include <common/io/console.h>
@@ -36,14 +39,19 @@ main(int argc, char **argv)
   // twice (at 0.5 and 0.25 of the stage) before it converges at 0.125.
   const std::vector<std::pair<bool, unsigned int>> script =
     {{false, 7}, {false, 5}, {true, 3}, {true, 4}, {true, 2}, {true, 2}};
+  // Extra active-set solves of each attempt: (first, later iterations).
+  const std::vector<std::pair<unsigned int, unsigned int>> extra =
+    {{1, 0}, {0, 2}, {3, 0}, {4, 6}, {0, 0}, {0, 0}};
   unsigned int               attempt = 0;
   Solvers::LoadStepCallbacks callbacks;
   callbacks.solve = [&](const Solvers::LoadState &state) {
     deallog << "attempt " << attempt + 1 << " at pseudo-time " << state.time
             << std::endl;
     Solvers::NewtonStatistics statistics;
-    statistics.converged    = script.at(attempt).first;
-    statistics.n_iterations = script.at(attempt).second;
+    statistics.converged                      = script.at(attempt).first;
+    statistics.n_iterations                   = script.at(attempt).second;
+    statistics.n_extra_first_iteration_solves = extra.at(attempt).first;
+    statistics.n_extra_later_iteration_solves = extra.at(attempt).second;
     if (!statistics.converged)
       statistics.failure = "scripted failure";
     ++attempt;

@@ -196,6 +196,45 @@ namespace Common
 
     template <int dim>
     void
+    ActiveSetPolicy<dim>::begin_linearisation(const ContactState<dim> &state)
+    {
+      std::vector<NodeState<dim>> nodes(state.n_nodes());
+      for (unsigned int j = 0; j < state.n_nodes(); ++j)
+        nodes[j] = state.node(j);
+      saved_history          = history;
+      saved_history_residual = history_residual;
+      saved_equilibrium_sets = equilibrium_sets;
+      history.assign(1, codes(state, nodes));
+      history_residual.assign(1, std::numeric_limits<double>::infinity());
+      equilibrium_sets.clear();
+      cycling = false;
+    }
+
+
+
+    template <int dim>
+    void
+    ActiveSetPolicy<dim>::end_linearisation(const ContactState<dim> &state)
+    {
+      std::vector<NodeState<dim>> nodes(state.n_nodes());
+      for (unsigned int j = 0; j < state.n_nodes(); ++j)
+        nodes[j] = state.node(j);
+      history          = saved_history;
+      history_residual = saved_history_residual;
+      equilibrium_sets = saved_equilibrium_sets;
+      if (history.empty())
+        {
+          history.emplace_back();
+          history_residual.push_back(std::numeric_limits<double>::infinity());
+        }
+      history.back() = codes(state, nodes);
+      cycling        = false;
+    }
+
+
+
+    template <int dim>
+    void
     ActiveSetPolicy<dim>::begin_step(const ContactState<dim> &state)
     {
       std::vector<NodeState<dim>> nodes(state.n_nodes());

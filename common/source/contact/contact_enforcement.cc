@@ -337,6 +337,24 @@ namespace Common
 
 
     template <int dim>
+    void
+    ContactEnforcement<dim>::begin_linearisation()
+    {
+      policy.begin_linearisation(contact_state);
+    }
+
+
+
+    template <int dim>
+    void
+    ContactEnforcement<dim>::end_linearisation()
+    {
+      policy.end_linearisation(contact_state);
+    }
+
+
+
+    template <int dim>
     bool
     ContactEnforcement<dim>::revisits_held_set() const
     {

@@ -820,45 +820,53 @@ namespace Common
       update_geometry();
       contact_enforcement->begin_step();
       Solvers::NewtonCallbacks callbacks;
-      // The first iteration of a solve carries the load increment: its
-      // active set may be iterated on its own linearisation, each solve
-      // from the same state (see NonlinearSolverParameters).
-      const bool first_iteration_sets =
-        nonlinear_solver_parameters.max_first_iteration_solves > 1 &&
-        uses_linearized_tractions();
+      // A Newton iteration may solve the contact problem of its own
+      // linearisation: each solve from the same state, the first update of
+      // the set semismooth, the later ones one point each (a pivoting
+      // method; see NonlinearSolverParameters). The first iteration
+      // carries the load increment and has its own limit.
       unsigned int n_extra_first_iteration_solves = 0;
+      unsigned int n_extra_later_iteration_solves = 0;
       bool         first_iteration                = true;
       callbacks.assemble_solve_and_update = [&](const double tolerance) {
-        if (!first_iteration_sets || !first_iteration)
+        const bool is_first = first_iteration;
+        first_iteration     = false;
+        const unsigned int max_solves =
+          uses_linearized_tractions() ?
+            (is_first ?
+               nonlinear_solver_parameters.max_first_iteration_solves :
+               nonlinear_solver_parameters.max_later_iteration_solves) :
+            1;
+        if (max_solves <= 1)
           return assemble_and_solve(state, load, tolerance);
-        first_iteration                               = false;
         const TrilinosWrappers::MPI::Vector start     = solution_owned;
         double                              increment = 0.;
-        // Every set of these solves counts as seen: they share one
-        // linearisation, on which a revisited set is a cycle.
-        contact_enforcement->restart_cycle_detection();
+        // The sets of these solves are judged on one linearisation: only
+        // they count as seen while it lasts.
+        contact_enforcement->begin_linearisation();
         for (unsigned int i = 1;; ++i)
           {
             increment = assemble_and_solve(state, load, tolerance);
-            if (i == nonlinear_solver_parameters.max_first_iteration_solves)
+            if (i == max_solves)
               break;
             // The pressures of the linearised step and the gaps at its end.
             contact_enforcement->update_pressures(solution,
                                                   linearized_residual);
             const auto         t = std::chrono::steady_clock::now();
             const unsigned int n_changed =
-              contact_enforcement->update_active_set(solution, -1., false);
+              contact_enforcement->update_active_set(solution, -1., i > 1);
             solve_times.active_set_update += IO::seconds_since(t);
-            verbose << "      Solve " << i
-                    << " of the first iteration: " << n_changed
+            verbose << "      Solve " << i << " of the iteration: " << n_changed
                     << " active-set changes" << std::endl;
             if (n_changed == 0 || contact_enforcement->is_cycling())
               break;
-            ++n_extra_first_iteration_solves;
+            ++(is_first ? n_extra_first_iteration_solves :
+                          n_extra_later_iteration_solves);
             solution_owned = start;
             solution       = solution_owned;
             update_geometry();
           }
+        contact_enforcement->end_linearisation();
         return increment;
       };
       // In a nonlinear problem the iterate depends on the iteration's
@@ -1081,6 +1089,8 @@ namespace Common
       solve_times.contact_cpu += IO::process_cpu_seconds() - cpu_start;
       statistics.n_extra_first_iteration_solves =
         n_extra_first_iteration_solves;
+      statistics.n_extra_later_iteration_solves =
+        n_extra_later_iteration_solves;
       return statistics;
     }
 

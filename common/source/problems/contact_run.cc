@@ -27,6 +27,7 @@ namespace Common
     {
       unsigned int total_iterations = 0, max_iterations = 0;
       unsigned int total_failed = 0, max_with_cutbacks = 0;
+      unsigned int max_solves = 0;
       for (unsigned int i = 0; i < stepping.newton_iterations.size(); ++i)
         {
           const unsigned int n      = stepping.newton_iterations[i];
@@ -35,6 +36,9 @@ namespace Common
           total_failed += failed;
           max_iterations    = std::max(max_iterations, n);
           max_with_cutbacks = std::max(max_with_cutbacks, n + failed);
+          const unsigned int extra =
+            i < stepping.extra_solves.size() ? stepping.extra_solves[i] : 0;
+          max_solves = std::max(max_solves, n + failed + extra);
         }
       IO::JsonObject newton;
       newton.set("total_iterations", total_iterations)
@@ -48,7 +52,11 @@ namespace Common
         .set("n_steps_converged_on_step_tolerance",
              stepping.n_converged_on_step)
         .set("first_iteration_extra_solves",
-             stepping.n_extra_first_iteration_solves);
+             stepping.n_extra_first_iteration_solves)
+        .set("later_iterations_extra_solves",
+             stepping.n_extra_later_iteration_solves)
+        .set("extra_solves_per_step", stepping.extra_solves)
+        .set("max_linear_solves_per_step_with_cutbacks", max_solves);
       return newton;
     }
 

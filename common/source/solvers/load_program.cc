@@ -280,6 +280,8 @@ namespace Common
       unsigned int           step = 0;
       // Iterations of the failed attempts since the last accepted step.
       unsigned int failed_iterations = 0;
+      // Extra active-set solves since the last accepted step.
+      unsigned int extra_solves = 0;
       for (unsigned int s = 0; s < program.stages.size(); ++s)
         {
           const auto  &stage     = program.stages[s];
@@ -297,6 +299,10 @@ namespace Common
               const NewtonStatistics newton = callbacks.solve(state);
               statistics.n_extra_first_iteration_solves +=
                 newton.n_extra_first_iteration_solves;
+              statistics.n_extra_later_iteration_solves +=
+                newton.n_extra_later_iteration_solves;
+              extra_solves += newton.n_extra_first_iteration_solves +
+                              newton.n_extra_later_iteration_solves;
               if (newton.converged)
                 {
                   ++step;
@@ -307,6 +313,8 @@ namespace Common
                   statistics.failed_attempt_iterations.push_back(
                     failed_iterations);
                   failed_iterations = 0;
+                  statistics.extra_solves.push_back(extra_solves);
+                  extra_solves = 0;
                   statistics.n_converged_on_step += newton.converged_on_step;
                   StepInfo info;
                   info.step             = step;

@@ -101,18 +101,38 @@ namespace Common
           Patterns::Integer(1, 100),
           "Lagrange multipliers in a nonlinear problem: the first Newton "
           "iteration of a load step carries its load increment and decides "
-          "most of its active set. Above 1, that iteration iterates the set "
-          "on its own linearisation (sequential quadratic programming): the "
-          "step is solved again from the same state with the set that the "
-          "pressures of the linearised residual and the gaps at the "
-          "solve's end give, until the set repeats or this many solves are "
-          "made; the iteration then goes on from the last solve with the "
-          "semismooth update. The set is then judged on a consistent "
-          "linear model instead of an iterate far from equilibrium. Each "
-          "further solve costs an assembly and a linear solve, and is "
-          "counted in summary.json (newton/first_iteration_extra_solves), "
-          "not as a Newton iteration. 1: one solve, the semismooth method "
-          "alone. Ignored where the problem is linear or penalized. "
+          "most of its active set. Above 1, that iteration solves the "
+          "contact problem of its own linearisation (sequential quadratic "
+          "programming): the step is solved again from the same state with "
+          "the set that the pressures of the linearised residual and the "
+          "gaps at the solve's end give, first by the semismooth update of "
+          "every point, then one point per solve (the largest violation "
+          "whose change leads to a set not yet solved on this "
+          "linearisation, a pivoting method), until no point changes, no "
+          "change leads to a new set, or this many solves are made; the "
+          "iteration then goes on from the last solve with the semismooth "
+          "update. The set is then judged on a consistent linear model "
+          "instead of an iterate far from equilibrium. Each further solve "
+          "costs an assembly and a linear solve, and is counted in "
+          "summary.json (newton/first_iteration_extra_solves and "
+          "newton/extra_solves_per_step), not as a Newton iteration. 1: one "
+          "solve, the semismooth method alone. Ignored where the problem is "
+          "linear or penalized. Dimensionless.");
+        prm.declare_entry(
+          "Active-set solves in later iterations",
+          "1",
+          Patterns::Integer(1, 100),
+          "The same as 'Active-set solves in the first iteration' for every "
+          "later Newton iteration of a solve: each linearisation then "
+          "solves its own contact problem, and the Newton iterations count "
+          "linearisations (a Josephy-Newton method). Where contact "
+          "pressures vanish over a zone (a strip wrapped around a tool), "
+          "the set that satisfies every point is found there on one "
+          "linearisation instead of one change per Newton iteration. The "
+          "further solves are counted in summary.json "
+          "(newton/later_iterations_extra_solves and "
+          "newton/extra_solves_per_step). 1: one solve per iteration. "
+          "Ignored where the problem is linear or penalized. "
           "Dimensionless.");
         prm.declare_entry(
           "Step test residual bound",
@@ -150,6 +170,8 @@ namespace Common
         divergence_bound          = prm.get_double("Divergence bound");
         max_first_iteration_solves =
           prm.get_integer("Active-set solves in the first iteration");
+        max_later_iteration_solves =
+          prm.get_integer("Active-set solves in later iterations");
       }
       prm.leave_subsection();
     }

@@ -101,6 +101,17 @@ namespace Common
       void
       restart_history(const ContactState<dim> &state);
 
+      /** @brief Set the history aside for an active-set iteration on one
+       * linearisation: the sets seen on it alone count, from the current
+       * set on, until end_linearisation(). */
+      void
+      begin_linearisation(const ContactState<dim> &state);
+
+      /** @brief Restore the history set aside by begin_linearisation(),
+       * with the current set as the one that produced the iterate. */
+      void
+      end_linearisation(const ContactState<dim> &state);
+
       /**
        * @brief Apply the active-set rule to every paired node: the normal
        * rule NormalEnforcement::is_closed(), then for closed nodes the
@@ -240,7 +251,11 @@ namespace Common
       /** Which entries of the history count as seen in the current update
        * (all, unless the iteration progressed since their use). */
       std::vector<bool> history_counts;
-      bool              cycling;
+      /** The history set aside by begin_linearisation(). */
+      std::vector<std::vector<int>> saved_history;
+      std::vector<double>           saved_history_residual;
+      std::vector<std::vector<int>> saved_equilibrium_sets;
+      bool                          cycling;
       /** See revisits_held_set(). */
       bool revisited_held_set;
       bool last_update_extrapolated;

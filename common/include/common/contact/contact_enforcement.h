@@ -352,6 +352,14 @@ namespace Common
       void
       restart_cycle_detection();
 
+      /** @brief ActiveSetPolicy::begin_linearisation(). */
+      void
+      begin_linearisation();
+
+      /** @brief ActiveSetPolicy::end_linearisation(). */
+      void
+      end_linearisation();
+
       /** @brief Norm of the normal and tangential complementarity
        * functions weighted by D_j (N), over all ranks; collective. */
       double

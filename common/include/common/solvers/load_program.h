@@ -196,6 +196,12 @@ namespace Common
       /** Solves of first iterations beyond their first, over every
        * attempt (NewtonStatistics::n_extra_first_iteration_solves). */
       unsigned int n_extra_first_iteration_solves = 0;
+      /** The same for later iterations
+       * (NewtonStatistics::n_extra_later_iteration_solves). */
+      unsigned int n_extra_later_iteration_solves = 0;
+      /** Extra solves of both kinds of each accepted step, its failed
+       * attempts included; the same length as newton_iterations. */
+      std::vector<unsigned int> extra_solves;
       /** Accepted steps whose Newton iteration converged on the step test
        * (equilibrium residual at round-off above its tolerance). */
       unsigned int n_converged_on_step = 0;

@@ -59,6 +59,8 @@ namespace Common
        * with the active set that the previous one's linearisation gives
        * (1: one solve, the semismooth update on the nonlinear iterate). */
       unsigned int max_first_iteration_solves = 1;
+      /** The same for every later Newton iteration of a solve. */
+      unsigned int max_later_iteration_solves = 1;
     };
 
     /**
@@ -140,6 +142,9 @@ namespace Common
        * assembly and a linear solve at the same state; not counted in
        * n_iterations. */
       unsigned int n_extra_first_iteration_solves = 0;
+      /** The same for the later iterations
+       * (NonlinearSolverParameters::max_later_iteration_solves). */
+      unsigned int n_extra_later_iteration_solves = 0;
     };
 
     /**
