@@ -737,8 +737,9 @@ def processor_s(pid):
         return 0.
 
 
-def run(executable, case_dir, time_limit, memory_limit):
-    """Run executable on case_dir/case.prm in case_dir, stopped (with its
+def run(executable, case_dir, time_limit, memory_limit, env=None):
+    """Run executable on case_dir/case.prm in case_dir (with the environment
+    env, default this process's), stopped (with its
     process group) at time_limit seconds or memory_limit MB. Returns (exit
     code or None if stopped, why stopped: None, 'time' or 'memory',
     whether a run stopped at the time limit was making progress in the
@@ -751,7 +752,7 @@ def run(executable, case_dir, time_limit, memory_limit):
         start = time.time()
         process = subprocess.Popen([executable, "case.prm"], cwd=case_dir, stdout=out,
                                    stderr=err, stdin=subprocess.DEVNULL,
-                                   start_new_session=True)
+                                   start_new_session=True, env=env)
         last_size, last_growth, stopped, samples = 0, start, None, []
         while process.poll() is None:
             now = time.time()
