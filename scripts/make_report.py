@@ -296,6 +296,9 @@ def robustness_section(results):
             ("max_with_cutbacks", "most per step, cutbacks counted"),
             ("failed_attempt_iterations", "in failed attempts"),
             ("first_iteration_extra_solves", "extra first-iteration solves"),
+            ("later_iterations_extra_solves", "extra later-iteration solves"),
+            ("max_linear_solves_per_step_with_cutbacks",
+             "most linear solves in a step"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
             ("change_vs_coarse_percent", "headline change [%]"),
             ("change_against", "against"), ("detail", "detail")])
