@@ -170,10 +170,7 @@ namespace Common
     void
     ActiveSetPolicy<dim>::restart_history(const ContactState<dim> &state)
     {
-      std::vector<NodeState<dim>> nodes(state.n_nodes());
-      for (unsigned int j = 0; j < state.n_nodes(); ++j)
-        nodes[j] = state.node(j);
-      const std::vector<int> current = codes(state, nodes);
+      const std::vector<int> current = codes(state);
       // The sets of the earlier equilibria stay seen: each had a node on
       // the wrong side, so none is the solution, and returning to one
       // would repeat the cycle (A, B, A ...) that a penalty, whose
@@ -198,13 +195,10 @@ namespace Common
     void
     ActiveSetPolicy<dim>::begin_linearisation(const ContactState<dim> &state)
     {
-      std::vector<NodeState<dim>> nodes(state.n_nodes());
-      for (unsigned int j = 0; j < state.n_nodes(); ++j)
-        nodes[j] = state.node(j);
       saved_history          = history;
       saved_history_residual = history_residual;
       saved_equilibrium_sets = equilibrium_sets;
-      history.assign(1, codes(state, nodes));
+      history.assign(1, codes(state));
       history_residual.assign(1, std::numeric_limits<double>::infinity());
       equilibrium_sets.clear();
       cycling = false;
@@ -216,9 +210,6 @@ namespace Common
     void
     ActiveSetPolicy<dim>::end_linearisation(const ContactState<dim> &state)
     {
-      std::vector<NodeState<dim>> nodes(state.n_nodes());
-      for (unsigned int j = 0; j < state.n_nodes(); ++j)
-        nodes[j] = state.node(j);
       history          = saved_history;
       history_residual = saved_history_residual;
       equilibrium_sets = saved_equilibrium_sets;
@@ -227,7 +218,7 @@ namespace Common
           history.emplace_back();
           history_residual.push_back(std::numeric_limits<double>::infinity());
         }
-      history.back() = codes(state, nodes);
+      history.back() = codes(state);
       cycling        = false;
     }
 
@@ -237,15 +228,24 @@ namespace Common
     void
     ActiveSetPolicy<dim>::begin_step(const ContactState<dim> &state)
     {
-      std::vector<NodeState<dim>> nodes(state.n_nodes());
-      for (unsigned int j = 0; j < state.n_nodes(); ++j)
-        nodes[j] = state.node(j);
       equilibrium_sets.clear();
-      history.assign(1, codes(state, nodes));
+      history.assign(1, codes(state));
       history_residual.assign(1, std::numeric_limits<double>::infinity());
       cycling                  = false;
       last_update_extrapolated = false;
       extrapolation_enabled    = accelerate_release;
+    }
+
+
+
+    template <int dim>
+    std::vector<int>
+    ActiveSetPolicy<dim>::codes(const ContactState<dim> &state) const
+    {
+      std::vector<NodeState<dim>> nodes(state.n_nodes());
+      for (unsigned int j = 0; j < state.n_nodes(); ++j)
+        nodes[j] = state.node(j);
+      return codes(state, nodes);
     }
 
 

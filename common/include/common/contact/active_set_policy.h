@@ -201,6 +201,10 @@ namespace Common
       codes(const ContactState<dim>           &state,
             const std::vector<NodeState<dim>> &nodes) const;
 
+      /** The codes of the nodes' current states in @p state. */
+      std::vector<int>
+      codes(const ContactState<dim> &state) const;
+
       /** The extrapolated release of update(): clears @p next of the
        * owned closed nodes within twice the band of an opened node, unless
        * that would open the whole zone (collective). */
