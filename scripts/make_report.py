@@ -292,7 +292,8 @@ def robustness_section(results):
         runs = [{k: str(v) for k, v in run.items()} for run in data["runs"]]
         out += generic_table(runs, [
             ("app", "application"), ("variation", "variation"), ("status", "status"),
-            ("newton_iterations", "Newton"), ("max_iterations_per_step", "most per step"),
+            ("newton_iterations", "Newton"), ("steps", "steps taken"),
+            ("max_iterations_per_step", "most per step"),
             ("max_with_cutbacks", "most per step, cutbacks counted"),
             ("failed_attempt_iterations", "in failed attempts"),
             ("first_iteration_extra_solves", "extra first-iteration solves"),

@@ -528,6 +528,7 @@ def main():
                 n_defects += status.startswith("DEFECT")
                 row = {"app": app, "variation": name, "status": status,
                        "newton_iterations": newton.get("total_iterations", ""),
+                       "steps": len(newton.get("iterations_per_step", [])) if newton else "",
                        "max_iterations_per_step": newton.get("max_iterations_per_step", ""),
                        "max_with_cutbacks": most_per_step(newton) if newton else "",
                        "failed_attempt_iterations": newton.get("failed_attempt_iterations", ""),
@@ -543,6 +544,7 @@ def main():
                        "detail": detail, "case": os.path.relpath(case_dir, ROOT)}
                 rows.append(row)
                 print(f"{app:14s} {name:30s} {status:22s} it {str(row['newton_iterations']):>5s} "
+                      f"steps {str(row['steps']):>4s} "
                       f"max {str(row['max_iterations_per_step']):>3s} "
                       f"({str(row['max_with_cutbacks']):>3s}) solves "
                       f"{str(row['max_linear_solves_per_step_with_cutbacks']):>3s} cutbacks "
@@ -550,7 +552,7 @@ def main():
                       flush=True)
         for name, why in VARIATIONS[app]["not_available"]:
             rows.append({"app": app, "variation": name, "status": "not available",
-                         "newton_iterations": "", "max_iterations_per_step": "",
+                         "newton_iterations": "", "steps": "", "max_iterations_per_step": "",
                          "max_with_cutbacks": "", "failed_attempt_iterations": "",
                          "first_iteration_extra_solves": "", "cutbacks": "", "wall_time_s": "", "headline": "",
                          "change_vs_coarse_percent": "", "change_against": "",

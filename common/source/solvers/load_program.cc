@@ -85,6 +85,19 @@ namespace Common
                           "Smallest step, as a fraction of a stage, that "
                           "cutbacks may reach before the run stops with an "
                           "error. Dimensionless, in (0, 1].");
+        prm.enter_subsection("Largest step");
+        for (const auto &channel : channels)
+          prm.declare_entry(channel.name,
+                            "0",
+                            Patterns::Double(0.),
+                            "Largest change of the channel in one step, in "
+                            "the unit of its stage entry: a stage whose "
+                            "steps change it by more divides each of its "
+                            "steps into equal substeps that do not (a path "
+                            "discretisation, as a step is; the console and "
+                            "the results count the substeps as steps). 0: no "
+                            "limit.");
+        prm.leave_subsection();
         for (unsigned int s = 0; s < max_stages; ++s)
           {
             prm.enter_subsection(stage_subsection(s));
@@ -133,6 +146,15 @@ namespace Common
       AssertThrow(min_increment > 0. && min_increment <= 1.,
                   ExcMessage("Load program: 'Minimum increment' must lie in "
                              "(0, 1]."));
+      largest_step.clear();
+      prm.enter_subsection("Largest step");
+      for (const auto &channel : channels)
+        {
+          const double value = prm.get_double(channel.name);
+          if (value > 0.)
+            largest_step[channel.name] = value;
+        }
+      prm.leave_subsection();
       stages.clear();
       std::map<std::string, double> current;
       for (const auto &channel : channels)
@@ -194,6 +216,9 @@ namespace Common
       for (const auto &stage : stages)
         for (const auto &[name, value] : stage.end_values)
           loads = loads || value != 0.;
+      // Checks the limits at once, not at the start of their stage.
+      for (unsigned int s = 0; s < stages.size(); ++s)
+        substeps_per_step(s);
       if (!loads && !channels.empty())
         {
           std::string names;
@@ -219,6 +244,31 @@ namespace Common
       for (const auto &stage : stages)
         n += stage.n_steps;
       return n;
+    }
+
+
+
+    unsigned int
+    LoadProgramParameters::substeps_per_step(const unsigned int s) const
+    {
+      AssertIndexRange(s, stages.size());
+      unsigned int n_substeps = 1;
+      for (const auto &[name, largest] : largest_step)
+        {
+          const double start = s == 0 ? 0. : stages[s - 1].end_values.at(name);
+          const double change =
+            std::abs(stages[s].end_values.at(name) - start) / stages[s].n_steps;
+          // A step exactly at the limit (up to round-off) is not divided.
+          const double n = std::ceil(change / largest * (1. - 1e-12));
+          AssertThrow(n * stages[s].n_steps <= max_steps_per_stage,
+                      ExcMessage(
+                        "Load program/Largest step: '" + name + "' = " +
+                        IO::Console::format(largest) + " would divide stage " +
+                        std::to_string(s + 1) + " into more than " +
+                        std::to_string(max_steps_per_stage) + " steps."));
+          n_substeps = std::max(n_substeps, static_cast<unsigned int>(n));
+        }
+      return n_substeps;
     }
 
 
@@ -284,9 +334,19 @@ namespace Common
       unsigned int extra_solves = 0;
       for (unsigned int s = 0; s < program.stages.size(); ++s)
         {
-          const auto  &stage     = program.stages[s];
-          const double nominal   = 1. / stage.n_steps;
-          double       increment = nominal;
+          const auto        &stage      = program.stages[s];
+          const unsigned int n_substeps = program.substeps_per_step(s);
+          const unsigned int n_steps    = stage.n_steps * n_substeps;
+          const double       nominal    = 1. / n_steps;
+          if (n_substeps > 1)
+            console.stream()
+              << "Stage " << s + 1 << (stage.name.empty() ? "" : " (")
+              << stage.name << (stage.name.empty() ? "" : ")")
+              << ": each step changes a channel by more than its 'Largest "
+                 "step'; "
+              << n_substeps << " substeps per step, " << n_steps << " in all"
+              << std::endl;
+          double increment = nominal;
           // Fraction of the stage reached.
           double       reached       = 0.;
           unsigned int step_in_stage = 0;
@@ -322,7 +382,7 @@ namespace Common
                   info.stage_name       = stage.name;
                   info.n_stages         = program.stages.size();
                   info.step_in_stage    = step_in_stage;
-                  info.n_steps_in_stage = stage.n_steps;
+                  info.n_steps_in_stage = n_steps;
                   info.state            = state;
                   callbacks.accept(info, newton);
                   // Return to the nominal increment once a reduced one

@@ -8,6 +8,8 @@
  * prescribing a motion, holding and releasing are all stages. Stage k
  * (counted from 0) covers the pseudo-time interval [k, k + 1].
  *
+ * A channel may limit its change in one step ("Largest step"): the steps
+ * of a stage that exceed it are divided into equal substeps beforehand.
  * The stepping cuts a failed step back (the problem restores its last
  * accepted state) and retries with half the increment, down to a minimum
  * per stage; after a successful reduced step the increment grows back to
@@ -100,6 +102,9 @@ namespace Common
        * to the load, lose their meaning. */
       static constexpr double min_channel_value = 1e-9;
       static constexpr double max_channel_value = 1e9;
+      /** Most steps a stage may take after the division by "Largest
+       * step". */
+      static constexpr unsigned int max_steps_per_stage = 1000000;
 
       /**
        * @brief Throw a one-line message unless the magnitude of @p value,
@@ -117,7 +122,8 @@ namespace Common
 
       /**
        * @brief Declare subsection "Load program" with "Number of stages",
-       * "Minimum increment" and the subsections "Stage 1" to
+       * "Minimum increment", the subsection "Largest step" (one entry per
+       * channel) and the subsections "Stage 1" to
        * "Stage <max_stages>", each with "Name", "Number of steps" and one
        * entry per channel (a number: the channel's value at the end of the
        * stage; empty: hold the value).
@@ -149,6 +155,17 @@ namespace Common
       std::vector<Stage>       stages;
       /** Smallest increment after cutbacks, as a fraction of a stage. */
       double min_increment;
+      /** Largest change of a channel in one step (subsection "Largest
+       * step"), for the channels that have a limit, in the channel's
+       * unit. */
+      std::map<std::string, double> largest_step;
+      /**
+       * @brief The number of equal substeps into which each step of stage
+       * @p s is divided so that no channel changes by more than its
+       * largest step: 1 when no limit applies.
+       */
+      unsigned int
+      substeps_per_step(const unsigned int s) const;
 
       /** @brief Total nominal number of steps over all stages. */
       unsigned int
