@@ -431,15 +431,61 @@ namespace Common
       revisited_held_set = false;
       if (changed && (one_point || seen(next_codes)))
         {
-          extrapolation_enabled               = false;
-          const auto [j_single, back_to_held] = single_change(nodes,
-                                                              normal,
-                                                              friction,
-                                                              state,
-                                                              current_codes,
-                                                              next_codes);
-          revisited_held_set                  = back_to_held;
-          cycling = j_single == numbers::invalid_unsigned_int;
+          extrapolation_enabled         = false;
+          auto [j_single, back_to_held] = single_change(nodes,
+                                                        normal,
+                                                        friction,
+                                                        state,
+                                                        current_codes,
+                                                        next_codes);
+          // Every single change leads to a set seen before: a node that
+          // trades a slip for another state (opening, or the slip of the
+          // other sense) and back may have its solution in the state
+          // between, stick. Try the changes with stick in place of the
+          // state a slipping node would take, or of the slip it would
+          // take.
+          if (j_single == numbers::invalid_unsigned_int &&
+              friction.has_friction())
+            {
+              std::vector<NodeState<dim>> sticking = proposed;
+              unsigned int                n_stick  = 0;
+              for (unsigned int j = 0, l = 0; j < n; ++j)
+                if (rows.is_owned(j))
+                  {
+                    if (next_codes[l] != current_codes[l] &&
+                        current[j].status != PointStatus::stick &&
+                        (proposed[j].status == PointStatus::slip ||
+                         current[j].status == PointStatus::slip))
+                      {
+                        sticking[j].status            = PointStatus::stick;
+                        sticking[j].slip_direction    = Tensor<1, dim>();
+                        sticking[j].turning_stiffness = 0.;
+                        ++n_stick;
+                      }
+                    ++l;
+                  }
+              if (distributed)
+                n_stick = Utilities::MPI::sum(n_stick, comm);
+              if (n_stick > 0)
+                {
+                  const std::vector<int> stick_codes = codes(state, sticking);
+                  const auto [j_stick, back]         = single_change(nodes,
+                                                             normal,
+                                                             friction,
+                                                             state,
+                                                             current_codes,
+                                                             stick_codes);
+                  if (j_stick != numbers::invalid_unsigned_int)
+                    {
+                      proposed     = sticking;
+                      next_codes   = stick_codes;
+                      j_single     = j_stick;
+                      back_to_held = back;
+                    }
+                }
+            }
+          revisited_held_set = back_to_held;
+          cycling            = j_single == numbers::invalid_unsigned_int;
           // A cycle changes nothing: the caller decides what follows.
           if (cycling)
             {

@@ -131,8 +131,12 @@ namespace Common
        * If the rule returns to an active set seen earlier in the step
        * (ping-pong between open and closed, or stick and slip), only the
        * point with the largest complementarity violation is changed,
-       * choosing one that leads to an unseen set; is_cycling() reports the
-       * case where none exists, and the set is then left unchanged.
+       * choosing one that leads to an unseen set. With friction, if none
+       * exists, the changes that take a node from or to slip (opening it,
+       * closing it, or reversing its slip) are tried with stick in their
+       * place, the state between them; is_cycling() reports the case where
+       * none of these leads to an unseen set either, and the set is then
+       * left unchanged.
        *
        * In a nonlinear problem the iterate depends on where the iteration
        * stands, not on the set alone, and a set revisited after the
