@@ -300,6 +300,8 @@ def robustness_section(results):
             ("later_iterations_extra_solves", "extra later-iteration solves"),
             ("max_linear_solves_per_step_with_cutbacks",
              "most linear solves in a step"),
+            ("max_stabilized_solves_per_step", "most stabilized solves in a step"),
+            ("max_iterations_per_solve", "most iterations of one solve"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
             ("change_vs_coarse_percent", "headline change [%]"),
             ("change_against", "against"), ("detail", "detail")])

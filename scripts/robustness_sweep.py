@@ -16,7 +16,10 @@ does: table fuzz_prm.APPS) and classifies each run:
              beside them the most linear solves in a step ('solves': its
              Newton iterations with cutbacks and the further solves of
              active-set iterations on a linearisation, 'Active-set solves
-             in the first iteration' and 'in later iterations');
+             in the first iteration' and 'in later iterations'), the
+             stabilized solves (springs to the last state, in steps with
+             no equilibrium near it: total, and most in a step) and the
+             most Newton iterations of one solve, plain or stabilized;
   failed     exit != 0 with one line '<app>: error: ...' on standard error
              and no result file (summary.json, profile CSV, PNG): a clean
              refusal or a solver failure reported as such;
@@ -538,6 +541,10 @@ def main():
                            newton.get("later_iterations_extra_solves", ""),
                        "max_linear_solves_per_step_with_cutbacks":
                            newton.get("max_linear_solves_per_step_with_cutbacks", ""),
+                       "stabilized_solves": newton.get("stabilized_solves", ""),
+                       "max_stabilized_solves_per_step":
+                           newton.get("max_stabilized_solves_per_step", ""),
+                       "max_iterations_per_solve": newton.get("max_iterations_per_solve", ""),
                        "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
                        "headline": "" if headline is None else headline,
                        "change_vs_coarse_percent": change, "change_against": against,
@@ -547,7 +554,9 @@ def main():
                       f"steps {str(row['steps']):>4s} "
                       f"max {str(row['max_iterations_per_step']):>3s} "
                       f"({str(row['max_with_cutbacks']):>3s}) solves "
-                      f"{str(row['max_linear_solves_per_step_with_cutbacks']):>3s} cutbacks "
+                      f"{str(row['max_linear_solves_per_step_with_cutbacks']):>3s} "
+                      f"stabilized {str(row['max_stabilized_solves_per_step']):>3s} "
+                      f"per solve {str(row['max_iterations_per_solve']):>3s} cutbacks "
                       f"{str(row['cutbacks']):>3s} {wall:7.1f} s {change:>8s} %  {detail[:100]}",
                       flush=True)
         for name, why in VARIATIONS[app]["not_available"]:

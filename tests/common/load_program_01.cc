@@ -9,6 +9,9 @@
  * step (first and later iterations, failed attempts included) beside
  * them: the most linear solves of a step are its iterations with cutbacks
  * plus those solves (step 1: 15 + 1 + 2 + 3 = 21; step 2: 4 + 10 = 14).
+ * The stabilized solves of a step count its failed attempts' too (step 1:
+ * 1 + 2 = 3), and the most iterations of one solve is the largest over
+ * every attempt (7, in the first, failed one).
  */
 
 #include <common/io/console.h>
@@ -42,6 +45,11 @@ main(int argc, char **argv)
   // Extra active-set solves of each attempt: (first, later iterations).
   const std::vector<std::pair<unsigned int, unsigned int>> extra =
     {{1, 0}, {0, 2}, {3, 0}, {4, 6}, {0, 0}, {0, 0}};
+  // Stabilized solves of each attempt and the most iterations of one of
+  // its solves (the third attempt: 3 iterations over 2 stabilized solves
+  // and the final one).
+  const std::vector<std::pair<unsigned int, unsigned int>> stabilized =
+    {{0, 7}, {1, 5}, {2, 1}, {0, 4}, {0, 2}, {0, 2}};
   unsigned int               attempt = 0;
   Solvers::LoadStepCallbacks callbacks;
   callbacks.solve = [&](const Solvers::LoadState &state) {
@@ -52,6 +60,8 @@ main(int argc, char **argv)
     statistics.n_iterations                   = script.at(attempt).second;
     statistics.n_extra_first_iteration_solves = extra.at(attempt).first;
     statistics.n_extra_later_iteration_solves = extra.at(attempt).second;
+    statistics.n_stabilized_solves            = stabilized.at(attempt).first;
+    statistics.max_iterations_per_solve       = stabilized.at(attempt).second;
     if (!statistics.converged)
       statistics.failure = "scripted failure";
     ++attempt;

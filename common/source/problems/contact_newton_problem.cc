@@ -955,6 +955,9 @@ namespace Common
       // Statistics of a further solve of the same step join the step's.
       const auto append = [&statistics](const Solvers::NewtonStatistics &more) {
         statistics.n_iterations += more.n_iterations;
+        statistics.max_iterations_per_solve =
+          std::max(statistics.max_iterations_per_solve,
+                   more.max_iterations_per_solve);
         statistics.residuals.insert(statistics.residuals.end(),
                                     more.residuals.begin(),
                                     more.residuals.end());
@@ -1028,8 +1031,9 @@ namespace Common
               again.failure =
                 "still moving after " + std::to_string(max_solves) + " solves";
             }
-          stabilized          = false;
-          bulk_matrix_current = false;
+          statistics.n_stabilized_solves = n_solves;
+          stabilized                     = false;
+          bulk_matrix_current            = false;
           if (again.converged)
             {
               again = newton();

@@ -27,7 +27,7 @@ namespace Common
     {
       unsigned int total_iterations = 0, max_iterations = 0;
       unsigned int total_failed = 0, max_with_cutbacks = 0;
-      unsigned int max_solves = 0;
+      unsigned int max_solves = 0, total_stabilized = 0, max_stabilized = 0;
       for (unsigned int i = 0; i < stepping.newton_iterations.size(); ++i)
         {
           const unsigned int n      = stepping.newton_iterations[i];
@@ -39,6 +39,12 @@ namespace Common
           const unsigned int extra =
             i < stepping.extra_solves.size() ? stepping.extra_solves[i] : 0;
           max_solves = std::max(max_solves, n + failed + extra);
+          const unsigned int stabilized =
+            i < stepping.stabilized_solves.size() ?
+              stepping.stabilized_solves[i] :
+              0;
+          total_stabilized += stabilized;
+          max_stabilized = std::max(max_stabilized, stabilized);
         }
       IO::JsonObject newton;
       newton.set("total_iterations", total_iterations)
@@ -56,7 +62,10 @@ namespace Common
         .set("later_iterations_extra_solves",
              stepping.n_extra_later_iteration_solves)
         .set("extra_solves_per_step", stepping.extra_solves)
-        .set("max_linear_solves_per_step_with_cutbacks", max_solves);
+        .set("max_linear_solves_per_step_with_cutbacks", max_solves)
+        .set("stabilized_solves", total_stabilized)
+        .set("max_stabilized_solves_per_step", max_stabilized)
+        .set("max_iterations_per_solve", stepping.max_iterations_per_solve);
       return newton;
     }
 

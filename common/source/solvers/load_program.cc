@@ -332,6 +332,8 @@ namespace Common
       unsigned int failed_iterations = 0;
       // Extra active-set solves since the last accepted step.
       unsigned int extra_solves = 0;
+      // Stabilized solves since the last accepted step.
+      unsigned int stabilized_solves = 0;
       for (unsigned int s = 0; s < program.stages.size(); ++s)
         {
           const auto        &stage      = program.stages[s];
@@ -363,6 +365,10 @@ namespace Common
                 newton.n_extra_later_iteration_solves;
               extra_solves += newton.n_extra_first_iteration_solves +
                               newton.n_extra_later_iteration_solves;
+              stabilized_solves += newton.n_stabilized_solves;
+              statistics.max_iterations_per_solve =
+                std::max(statistics.max_iterations_per_solve,
+                         newton.max_iterations_per_solve);
               if (newton.converged)
                 {
                   ++step;
@@ -375,6 +381,8 @@ namespace Common
                   failed_iterations = 0;
                   statistics.extra_solves.push_back(extra_solves);
                   extra_solves = 0;
+                  statistics.stabilized_solves.push_back(stabilized_solves);
+                  stabilized_solves = 0;
                   statistics.n_converged_on_step += newton.converged_on_step;
                   StepInfo info;
                   info.step             = step;

@@ -184,6 +184,10 @@ namespace Common
                  ConditionalOStream              &verbose)
     {
       NewtonStatistics statistics;
+      const auto       finish = [&statistics]() {
+        statistics.max_iterations_per_solve = statistics.n_iterations;
+        return statistics;
+      };
       // Inexact solves stop at the first sign of an active set that
       // returns to an earlier one: the rest of the step is solved exactly.
       bool inexact = parameters.linear_tolerance_factor > 0.;
@@ -274,7 +278,7 @@ namespace Common
                   statistics.residuals.push_back(residual);
                   statistics.active_set_changes.push_back(0);
                   statistics.failure = failure;
-                  return statistics;
+                  return finish();
                 }
             }
           if (hold_set && (residual.equilibrium < parameters.tolerance ||
@@ -322,7 +326,7 @@ namespace Common
               !std::isfinite(residual.complementarity))
             {
               statistics.failure = "non-finite residual";
-              return statistics;
+              return finish();
             }
           if (parameters.divergence_bound > 0. &&
               residual.equilibrium > parameters.divergence_bound)
@@ -332,14 +336,14 @@ namespace Common
                 IO::Console::format(residual.equilibrium) +
                 " above the divergence bound " +
                 IO::Console::format(parameters.divergence_bound) + ")";
-              return statistics;
+              return finish();
             }
           if (n_changed == 0 && residual.complementarity < parameters.tolerance)
             {
               if (residual.equilibrium < parameters.tolerance)
                 {
                   statistics.converged = true;
-                  return statistics;
+                  return finish();
                 }
               // The first iteration's step carries the load increment and
               // says nothing about round-off, nor does the step of an
@@ -370,14 +374,14 @@ namespace Common
                         "residual stays at " +
                         IO::Console::format(residual.equilibrium) +
                         " (residual and linearisation disagree)";
-                      return statistics;
+                      return finish();
                     }
                   verbose << "    Newton step below the step tolerance: the "
                              "equilibrium residual is at round-off level"
                           << std::endl;
                   statistics.converged         = true;
                   statistics.converged_on_step = true;
-                  return statistics;
+                  return finish();
                 }
             }
           if (!hold_set && callbacks.is_cycling())
@@ -398,13 +402,13 @@ namespace Common
                   continue;
                 }
               statistics.failure = "the active set cycles";
-              return statistics;
+              return finish();
             }
         }
       statistics.failure = "no convergence in " +
                            std::to_string(parameters.max_iterations) +
                            " iterations";
-      return statistics;
+      return finish();
     }
   } // namespace Solvers
 } // namespace Common

@@ -65,7 +65,14 @@ namespace Common
      * max_iterations_per_step_with_cutbacks (a step's accepted attempt and
      * the failed attempts since the step before it),
      * failed_attempt_iterations_per_step,
-     * n_steps_converged_on_step_tolerance.
+     * n_steps_converged_on_step_tolerance, the extra active-set solves
+     * (first_iteration_extra_solves, later_iterations_extra_solves,
+     * extra_solves_per_step, max_linear_solves_per_step_with_cutbacks),
+     * stabilized_solves and max_stabilized_solves_per_step (the solves
+     * with springs of steps that had no equilibrium near the last state,
+     * failed attempts included) and max_iterations_per_solve (the most
+     * Newton iterations of one solve, plain or stabilized, over every
+     * attempt).
      */
     IO::JsonObject
     newton_summary(const Solvers::LoadSteppingStatistics &stepping);

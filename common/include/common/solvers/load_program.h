@@ -219,6 +219,13 @@ namespace Common
       /** Extra solves of both kinds of each accepted step, its failed
        * attempts included; the same length as newton_iterations. */
       std::vector<unsigned int> extra_solves;
+      /** Stabilized solves (NewtonStatistics::n_stabilized_solves) of each
+       * accepted step, its failed attempts included; the same length as
+       * newton_iterations. */
+      std::vector<unsigned int> stabilized_solves;
+      /** Most Newton iterations of one solve, over every attempt
+       * (NewtonStatistics::max_iterations_per_solve). */
+      unsigned int max_iterations_per_solve = 0;
       /** Accepted steps whose Newton iteration converged on the step test
        * (equilibrium residual at round-off above its tolerance). */
       unsigned int n_converged_on_step = 0;

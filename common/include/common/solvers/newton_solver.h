@@ -145,6 +145,14 @@ namespace Common
       /** The same for the later iterations
        * (NonlinearSolverParameters::max_later_iteration_solves). */
       unsigned int n_extra_later_iteration_solves = 0;
+      /** Solves of the step with springs to the last state (the
+       * stabilized path, NonlinearSolverParameters::stabilization_factor);
+       * their iterations are counted in n_iterations. */
+      unsigned int n_stabilized_solves = 0;
+      /** Most Newton iterations of one solve of the step: n_iterations for
+       * a step solved once; with stabilized solves and multiplier updates,
+       * the largest of them. */
+      unsigned int max_iterations_per_solve = 0;
     };
 
     /**
