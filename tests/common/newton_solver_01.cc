@@ -17,7 +17,10 @@
  * above both stays held; once a change leads back to a set held before,
  * sets are held to the tolerance, and the loop stops when an equilibrium
  * returns to the one before the last (two sets trading places) or
- * reaches an equilibrium for the third time (a cycle of more sets). With
+ * reaches an equilibrium for the third time (a cycle of more sets), or
+ * when 8 iterations of one change per equilibrium keep their set, reach
+ * no equilibrium and do not halve the equilibrium residual (held iterates
+ * that repeat in pairs), but not while the set changes. With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -35,6 +38,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace dealii;
@@ -253,8 +257,10 @@ main()
       deallog << "  " << call << std::endl;
   }
   // A held set whose equilibrium residual stays above its complementarity
-  // residual and the tolerance (and does not grow) stays held until the
-  // iteration limit: no update, no convergence.
+  // residual and the tolerance (and does not grow) stays held, with no
+  // update; its residual does not halve in the 8 iterations after the
+  // cycle (iteration 1), and the loop stops at iteration 9 as stagnating
+  // instead of running to its limit (12).
   {
     std::vector<std::string> calls;
     report("cycling, equilibrium not reached",
@@ -262,6 +268,48 @@ main()
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }
+  // Held iterates that repeat in pairs (the changes made inside each
+  // iteration trade two sets back and forth): the residual falls until
+  // iteration 5, then alternates between 6.26e-2 and 6.27e-2. Iteration 9
+  // is still below half of iteration 1's; iteration 10 is not below half
+  // of iteration 2's, and the loop stops there.
+  {
+    std::vector<std::string> calls;
+    std::vector<double> equilibrium{3.6e-1, 8.9e-2, 6.6e-2, 6.4e-2, 6.26e-2};
+    for (unsigned int it = 6; it <= 30; ++it)
+      equilibrium.push_back(it % 2 == 0 ? 6.27e-2 : 6.26e-2);
+    report("held iterates in pairs",
+           run_held(equilibrium, {1}, calls, {1e-2}, {}, 30));
+  }
+  // A residual that does not halve while the set changes every second
+  // iteration (each held iterate's equilibrium residual, 2e-3, below the
+  // complementarity residual, 1e-2, decides a change) is no stagnation:
+  // it runs to the limit (20).
+  {
+    std::vector<std::string> calls;
+    report("held sets changing, residual not halving",
+           run_held({1e-3, 2e-3},
+                    std::vector<unsigned int>(20, 1),
+                    calls,
+                    {1e-2},
+                    {},
+                    20));
+  }
+  // A held set that converges slowly (its residual falls by 0.9 per
+  // iteration, halving in fewer than 8) is no stagnation: it runs to the
+  // limit (20). At 0.95 per iteration (0.66 in 8) it stops at iteration
+  // 10, 8 iterations after the last change (iteration 2).
+  for (const auto &[rate, name] :
+       std::vector<std::pair<double, std::string>>{{0.9, "0.9"},
+                                                   {0.95, "0.95"}})
+    {
+      std::vector<std::string> calls;
+      std::vector<double>      equilibrium{1e-3};
+      for (unsigned int it = 2; it <= 20; ++it)
+        equilibrium.push_back(equilibrium.back() * rate);
+      report("held set converging by " + name,
+             run_held(equilibrium, {1}, calls, {1e-2}, {}, 20));
+    }
 
   // Two sets that trade places at every equilibrium (a node tensile when
   // closed and penetrating when open): the first change (iteration 2, at

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 namespace Common
 {
@@ -195,8 +196,15 @@ namespace Common
       // the set: one change per equilibrium (see NewtonCallbacks).
       constexpr unsigned int n_semismooth               = 8;
       bool                   one_change_per_equilibrium = false;
-      bool                   hold_set                   = false;
-      unsigned int           n_held                     = 0;
+      // The iteration after which one change per equilibrium began, and
+      // the iterations in which its equilibrium residual must halve.
+      unsigned int           one_change_since = 0;
+      constexpr unsigned int n_stagnation     = 8;
+      // The last iteration whose iterate reached an equilibrium (to the
+      // tolerance or at round-off): a held set's progress.
+      unsigned int last_equilibrium = 0;
+      bool         hold_set         = false;
+      unsigned int n_held           = 0;
       // A held set changes once its equilibrium residual falls below the
       // complementarity residual, until a change leads back to a set held
       // before; from then on at equilibrium only (see NewtonCallbacks).
@@ -245,6 +253,8 @@ namespace Common
             hold_set && early_changes && !inexact_solve &&
             residual.equilibrium < residual.complementarity;
           n_held = hold_set ? n_held + 1 : 0;
+          if (residual.equilibrium < parameters.tolerance || hold_at_round_off)
+            last_equilibrium = it;
           if (hold_set &&
               (residual.equilibrium < parameters.tolerance ||
                hold_at_round_off) &&
@@ -308,6 +318,7 @@ namespace Common
                          "change per equilibrium"
                       << std::endl;
               one_change_per_equilibrium = true;
+              one_change_since           = it;
               hold_set                   = true;
             }
           statistics.n_iterations = it;
@@ -384,6 +395,37 @@ namespace Common
                   return finish();
                 }
             }
+          // One change per equilibrium whose set stays the same from one
+          // iteration to the next for n_stagnation iterations, that reach
+          // no equilibrium and do not halve the equilibrium residual, makes
+          // no progress: the changes made inside the iterations (active-set
+          // solves of each linearisation) trade the same sets back and
+          // forth, and the iterates repeat in pairs without end.
+          if (one_change_per_equilibrium &&
+              it >= one_change_since + n_stagnation &&
+              it >= last_equilibrium + n_stagnation)
+            {
+              const auto  &residuals = statistics.residuals;
+              const double before =
+                residuals[it - 1 - n_stagnation].equilibrium;
+              double best    = std::numeric_limits<double>::infinity();
+              bool   changed = false;
+              for (unsigned int k = it - n_stagnation; k < it; ++k)
+                {
+                  best    = std::min(best, residuals[k].equilibrium);
+                  changed = changed || statistics.active_set_changes[k] > 0;
+                }
+              if (!changed && best > 0.5 * before)
+                {
+                  statistics.failure =
+                    "the iteration stagnates (one change per equilibrium, "
+                    "no change of the set between iterations, and the "
+                    "equilibrium residual stays above " +
+                    IO::Console::format(0.5 * before) + " for " +
+                    std::to_string(n_stagnation) + " iterations)";
+                  return finish();
+                }
+            }
           if (!hold_set && callbacks.is_cycling())
             {
               // An inexact iterate may revisit a set; exact ones decide.
@@ -398,6 +440,7 @@ namespace Common
                              "per equilibrium"
                           << std::endl;
                   one_change_per_equilibrium = true;
+                  one_change_since           = it;
                   hold_set                   = true;
                   continue;
                 }

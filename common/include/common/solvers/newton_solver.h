@@ -106,7 +106,13 @@ namespace Common
        * (revisits_held_set()), each set is held until the tolerance: the
        * equilibria are then compared to detect an alternation between
        * two, or a cycle of more (an equilibrium reached a third time),
-       * either of which fails the step. A nonlinear problem judges its
+       * either of which fails the step. So do eight iterations of this
+       * mode that leave the set unchanged from one to the next, reach no
+       * equilibrium (to the tolerance or at round-off) and do not halve
+       * the equilibrium residual: the changes that a problem makes inside
+       * its iterations (the active-set solves of each linearisation) may
+       * then trade two sets back and forth, and the iterates repeat in
+       * pairs. A nonlinear problem judges its
        * sets on states out of equilibrium, and a bending body (whose
        * contact stiffness is no M-matrix) may cycle under the semismooth
        * rule even from equilibria; one change per equilibrium does not. */
