@@ -11,7 +11,9 @@
  * plus those solves (step 1: 15 + 1 + 2 + 3 = 21; step 2: 4 + 10 = 14).
  * The stabilized solves of a step count its failed attempts' too (step 1:
  * 1 + 2 = 3), and the most iterations of one solve is the largest over
- * every attempt (7, in the first, failed one).
+ * every attempt (7, in the first, failed one). An attempt that follows a
+ * cutback of its step is marked as such (LoadState::after_cutback: the
+ * second and third), and the mark ends with the accepted step.
  */
 
 #include <common/io/console.h>
@@ -54,7 +56,7 @@ main(int argc, char **argv)
   Solvers::LoadStepCallbacks callbacks;
   callbacks.solve = [&](const Solvers::LoadState &state) {
     deallog << "attempt " << attempt + 1 << " at pseudo-time " << state.time
-            << std::endl;
+            << (state.after_cutback ? ", after a cutback" : "") << std::endl;
     Solvers::NewtonStatistics statistics;
     statistics.converged                      = script.at(attempt).first;
     statistics.n_iterations                   = script.at(attempt).second;

@@ -940,6 +940,7 @@ namespace Common
             linear_solver.reset();
             result.converged = false;
             result.failure   = "non-finite value in an iterate";
+            result.diverged  = true;
           }
         catch (const Solvers::ExcFactorisationFailed &failure)
           {
@@ -948,6 +949,7 @@ namespace Common
             linear_solver.reset();
             result.converged = false;
             result.failure   = IO::one_line_message(failure);
+            result.diverged  = true;
           }
         return result;
       };
@@ -969,9 +971,13 @@ namespace Common
 
       // Pseudo-transient continuation: a failed step is solved again from
       // its start with springs to the last solution, anchored anew at each
-      // one, until a solve moves nothing; then without them.
+      // one, until a solve moves nothing; then without them. A step whose
+      // iteration diverged is cut back first: its increment was too large
+      // for Newton, and a smaller one may converge at once; the retried
+      // step takes the stabilized path if it fails too.
       if (!statistics.converged &&
-          nonlinear_solver_parameters.stabilization_factor > 0.)
+          nonlinear_solver_parameters.stabilization_factor > 0. &&
+          (!statistics.diverged || state.after_cutback))
         {
           verbose << "  The step failed (" << statistics.failure
                   << "); stabilized solves from its start" << std::endl;

@@ -334,6 +334,8 @@ namespace Common
       unsigned int extra_solves = 0;
       // Stabilized solves since the last accepted step.
       unsigned int stabilized_solves = 0;
+      // A cutback since the last accepted step.
+      bool cut_back = false;
       for (unsigned int s = 0; s < program.stages.size(); ++s)
         {
           const auto        &stage      = program.stages[s];
@@ -356,8 +358,9 @@ namespace Common
             {
               const double target = std::min(1., reached + increment);
               // The end of a stage exactly at its end time.
-              const LoadState state =
+              LoadState state =
                 program.state(target == 1. ? s + 1. : s + target);
+              state.after_cutback           = cut_back;
               const NewtonStatistics newton = callbacks.solve(state);
               statistics.n_extra_first_iteration_solves +=
                 newton.n_extra_first_iteration_solves;
@@ -383,6 +386,7 @@ namespace Common
                   extra_solves = 0;
                   statistics.stabilized_solves.push_back(stabilized_solves);
                   stabilized_solves = 0;
+                  cut_back          = false;
                   statistics.n_converged_on_step += newton.converged_on_step;
                   StepInfo info;
                   info.step             = step;
@@ -401,6 +405,7 @@ namespace Common
                 {
                   callbacks.reject();
                   ++statistics.n_cutbacks;
+                  cut_back = true;
                   failed_iterations += newton.n_iterations;
                   increment *= 0.5;
                   const std::string where =

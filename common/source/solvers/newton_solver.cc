@@ -82,15 +82,20 @@ namespace Common
           "solves); the springs are then removed and the state is solved "
           "to equilibrium without them, which alone is accepted. The path "
           "between is a dissipative one, as a snap would take. If a solve "
-          "fails, the step is cut back. "
+          "fails, the step is cut back. A step whose iteration diverges "
+          "(above the 'Divergence bound', a non-finite value, a matrix that "
+          "cannot be factorised) is cut back first, since a smaller "
+          "increment may converge at once, and takes this path only if the "
+          "retried step fails too. "
           "0: off, a failed step is cut back at once. Dimensionless.");
         prm.declare_entry(
           "Divergence bound",
           "0",
           Patterns::Double(0.),
           "An iterate whose equilibrium residual, relative to the external "
-          "load, exceeds this bound fails the step at once (it is cut back, "
-          "or solved again with the stabilization springs), instead of "
+          "load, exceeds this bound fails the step at once (it is cut back; "
+          "a retried step may be solved again with the stabilization "
+          "springs), instead of "
           "iterating on from a state far from any equilibrium (a sheet "
           "thrown off its tools) until a value turns non-finite or the "
           "iterations run out. Set it well above the largest residual of a "
@@ -336,7 +341,8 @@ namespace Common
           if (!std::isfinite(residual.equilibrium) ||
               !std::isfinite(residual.complementarity))
             {
-              statistics.failure = "non-finite residual";
+              statistics.failure  = "non-finite residual";
+              statistics.diverged = true;
               return finish();
             }
           if (parameters.divergence_bound > 0. &&
@@ -347,6 +353,7 @@ namespace Common
                 IO::Console::format(residual.equilibrium) +
                 " above the divergence bound " +
                 IO::Console::format(parameters.divergence_bound) + ")";
+              statistics.diverged = true;
               return finish();
             }
           if (n_changed == 0 && residual.complementarity < parameters.tolerance)

@@ -57,6 +57,9 @@ namespace Common
       double time = 0.;
       /** Channel values, by channel name. */
       std::map<std::string, double> values;
+      /** True for an attempt that follows a cutback of the same step (the
+       * load program's retry with a smaller increment). */
+      bool after_cutback = false;
 
       /** @brief The value of @p channel; throws if it is not declared. */
       double

@@ -135,8 +135,13 @@ namespace Common
       bool         converged    = false;
       /** Converged on the step test with the equilibrium residual above
        * its tolerance (at round-off level). */
-      bool                        converged_on_step = false;
-      std::string                 failure;
+      bool        converged_on_step = false;
+      std::string failure;
+      /** Failed by divergence: an equilibrium residual above the
+       * divergence bound, a non-finite value, or a matrix that could not
+       * be factorised. The increment was too large for the iteration,
+       * which says nothing about the equilibria near the step's start. */
+      bool                        diverged = false;
       std::vector<NewtonResidual> residuals;
       std::vector<unsigned int>   active_set_changes;
       /** Newton solves repeated after an update of the solid's
