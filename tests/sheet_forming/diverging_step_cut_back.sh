@@ -17,43 +17,11 @@ set -euo pipefail
 app="$1" src="$2" work="$3"
 rm -rf "$work"
 mkdir -p "$work"
-. "$(dirname "$0")/../run_case.sh"
+. "$(dirname "$0")/partial_stroke.sh"
 for factor in 1e-4 0; do
-  run_case "$app" "$work" "factor_$factor" "$(cat <<PRM
-include $src/parameters/sheet_forming/sheet_forming_mu01342.prm
-subsection Solid
-  set Element technology = displacement
-end
-subsection Mesh
-  set Number of cells through the thickness = 2
-  set Number of cells along the length      = 60
-end
-subsection Load program
-  subsection Stage 1
-    set Number of steps    = 4
-    set Punch displacement = 2
-  end
-  subsection Stage 2
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 2
-    set Die displacement   = 0
-  end
-  subsection Stage 3
-    set Name               = hold
-    set Number of steps    = 1
-    set Punch displacement = 2
-    set Die displacement   = 0
-  end
-end
-subsection Release
-  set Release stage = 0
-end
-subsection Nonlinear solver
-  set Stabilization factor = $factor
-end
-PRM
-)"
+  partial_stroke "$app" "$src" "$work" "factor_$factor" 4 2 \
+    "  set Stabilization factor = $factor" 60 \
+    "$(printf 'subsection Solid\n  set Element technology = displacement\nend')"
 done
 
 python3 - "$work" <<'PY'
