@@ -20,7 +20,10 @@
  * reaches an equilibrium for the third time (a cycle of more sets), or
  * when 8 iterations of one change per equilibrium keep their set, reach
  * no equilibrium and do not halve the equilibrium residual (held iterates
- * that repeat in pairs), but not while the set changes. With
+ * that repeat in pairs), but not while the set changes; an iterate
+ * whose step vanishes is at equilibrium right after a change, too (a
+ * change that moves nothing), so that such changes at a round-off floor
+ * above the tolerance stop the loop as an alternation. With
  * inexact solves ('Linear tolerance factor' 0.1) the first iteration is
  * solved fully and later ones to 0.1 times the previous residual; an
  * active set that returns to an earlier one after an inexact solve
@@ -106,26 +109,29 @@ namespace
    * one-point updates made so far (the last entry repeats). If
    * @p revisits is given, the problem reports whether the k-th one-point
    * update led back to a set held before (the last entry repeats).
-   * @p max_iterations bounds the loop. */
+   * @p max_iterations bounds the loop. Every step after the first is
+   * @p step, judged with the step tolerance @p step_tolerance. */
   NewtonStatistics
   run_held(const std::vector<double>       &equilibrium,
            const std::vector<unsigned int> &one_point_changes,
            std::vector<std::string>        &calls,
            const std::vector<double>       &complementarity = {},
            const std::vector<bool>         &revisits        = {},
-           const unsigned int               max_iterations  = 12)
+           const unsigned int               max_iterations  = 12,
+           const double                     step            = 1e-3,
+           const double                     step_tolerance  = 0.)
   {
     NonlinearSolverParameters parameters;
     parameters.max_iterations = max_iterations;
     parameters.tolerance      = 1e-10;
-    parameters.step_tolerance = 0.;
+    parameters.step_tolerance = step_tolerance;
 
     unsigned int    it = 0, one_point = 0;
     bool            cycling = false;
     NewtonCallbacks callbacks;
     callbacks.assemble_solve_and_update = [&](const double) {
       ++it;
-      return 1e-3;
+      return it == 1 ? 1e-3 : step;
     };
     callbacks.evaluate_residual = [&]() {
       NewtonResidual r;
@@ -327,6 +333,28 @@ main()
                     calls,
                     {3.848e-4, 5e-4, 3.925e-4, 3.848e-4},
                     {false, true}));
+    for (const auto &call : calls)
+      deallog << "  " << call << std::endl;
+  }
+
+  // Changes that move nothing (points with neither pressure nor gap) at
+  // a round-off floor just above the tolerance (1.2e-10, steps of 1e-14):
+  // each iterate after a change is at equilibrium, and its
+  // complementarity residual (0.1, the violation that no change removes)
+  // decides the next change at once. Compared as equilibria, the third
+  // one returns to the one before the last, and the loop stops at
+  // iteration 4 instead of running to its limit (30).
+  {
+    std::vector<std::string> calls;
+    report("changes that move nothing, at round-off",
+           run_held({1e-3, 1.2e-10},
+                    std::vector<unsigned int>(30, 1),
+                    calls,
+                    {1e-1},
+                    {},
+                    30,
+                    1e-14,
+                    1e-8));
     for (const auto &call : calls)
       deallog << "  " << call << std::endl;
   }

@@ -250,8 +250,14 @@ namespace Common
             residual.equilibrium > 2. * statistics.residuals.back().equilibrium;
           // A held iterate whose step vanishes has reached its
           // equilibrium at round-off level, below the tolerance or not.
+          // The first iterate after a change counts too: its step carries
+          // the change, and a change that moves nothing leaves the state
+          // where it was (a point with neither pressure nor gap), so that
+          // changes of that kind are compared as equilibria, and a
+          // violation that none of them removes ends the step instead of
+          // running it to its iteration limit.
           const bool hold_at_round_off =
-            hold_set && n_held > 0 && !inexact_solve &&
+            hold_set && !inexact_solve &&
             residual.increment < parameters.step_tolerance &&
             residual.equilibrium <= parameters.step_test_residual_bound;
           // A held iterate whose equilibrium residual is below its

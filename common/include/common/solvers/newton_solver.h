@@ -106,7 +106,11 @@ namespace Common
        * (revisits_held_set()), each set is held until the tolerance: the
        * equilibria are then compared to detect an alternation between
        * two, or a cycle of more (an equilibrium reached a third time),
-       * either of which fails the step. So do eight iterations of this
+       * either of which fails the step. An iterate whose step vanishes
+       * (below the step tolerance, the residual at round-off) is an
+       * equilibrium even right after a change: changes that move nothing
+       * (points with neither pressure nor gap) are compared too, and a
+       * violation that none of them removes fails the step. So do eight iterations of this
        * mode that leave the set unchanged from one to the next, reach no
        * equilibrium (to the tolerance or at round-off) and do not halve
        * the equilibrium residual: the changes that a problem makes inside
