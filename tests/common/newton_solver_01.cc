@@ -3,7 +3,8 @@
  * residual histories: it converges on the residual tolerance; it converges
  * on the step test when the equilibrium residual stalls above its tolerance
  * at round-off while the step is negligible, and flags it, but fails when
- * the residual stays far above round-off (bound 1e-6) as the step vanishes;
+ * the residual stays far above round-off (bound 1e-6) as the step vanishes
+ * and the last step did not halve it;
  * it never takes the first iteration's step (which carries the load
  * increment) as a convergence sign; it does not converge on a small step
  * while the active set changes or the complementarity residual is large,
@@ -20,7 +21,9 @@
  * reaches an equilibrium for the third time (a cycle of more sets), or
  * when 8 iterations of one change per equilibrium keep their set, reach
  * no equilibrium and do not halve the equilibrium residual (held iterates
- * that repeat in pairs), but not while the set changes; an iterate
+ * that repeat in pairs), but not while the set changes, unless the
+ * iterates repeat themselves (both residuals to 1e-3 over a period of 2
+ * to 8 iterations) while it does; an iterate
  * whose step vanishes is at equilibrium right after a change, too (a
  * change that moves nothing), so that such changes at a round-off floor
  * above the tolerance stop the loop as an alternation. With
@@ -219,6 +222,22 @@ main()
   // linearisation disagree): no convergence, a failure that says so.
   report("residual inconsistent",
          run({{1., 1e-3, 1e-1, 3}, {1e-12, 1e-3, 0, 0}}, 1e-8));
+  // Vanishing steps that still remove most of the residual (the bent
+  // strip: 2.6e-3, 3.7e-4, 1.7e-5, 1.8e-6, by 0.106 at the step test's
+  // first chance) are no disagreement: the iteration goes on and meets
+  // the tolerance at iteration 6. A vanishing step that lowers the
+  // residual by 0.6 only fails at once (iteration 3).
+  report("small steps, residual halved",
+         run({{1., 2.3e-2, 1e-1, 1},
+              {5e-4, 2.6e-3, 0, 0},
+              {4e-6, 3.7e-4, 0, 0},
+              {1.4e-7, 1.7e-5, 0, 0},
+              {5.7e-9, 1.8e-6, 0, 0},
+              {1.2e-9, 2e-11, 0, 0}},
+             1e-8));
+  report("small steps, residual not halved",
+         run({{1., 1e-2, 1e-1, 3}, {1e-3, 1e-3, 0, 0}, {1e-9, 6e-4, 0, 0}},
+             1e-8));
   // The step test disabled: the round-off floor is not accepted.
   report("step test disabled",
          run({{1., 1e-9, 1e-1, 10}, {5e-3, 7e-10, 0, 0}, {5e-10, 7e-10, 0, 0}},
@@ -287,13 +306,27 @@ main()
     report("held iterates in pairs",
            run_held(equilibrium, {1}, calls, {1e-2}, {}, 30));
   }
-  // A residual that does not halve while the set changes every second
+  // A residual that does not halve while the set changes at every
   // iteration (each held iterate's equilibrium residual, 2e-3, below the
-  // complementarity residual, 1e-2, decides a change) is no stagnation:
-  // it runs to the limit (20).
+  // complementarity residual, 1e-2 less 1 % per change, decides a change)
+  // is no stagnation: it runs to the limit (20). The same with a
+  // complementarity residual that every change leaves where it was: the
+  // iterates repeat themselves, and the loop stops at iteration 5, where
+  // iterations 4 and 5 repeat 2 and 3.
   {
     std::vector<std::string> calls;
+    std::vector<double>      complementarity;
+    for (unsigned int k = 0; k <= 20; ++k)
+      complementarity.push_back(1e-2 * (1. - 0.01 * k));
     report("held sets changing, residual not halving",
+           run_held({1e-3, 2e-3},
+                    std::vector<unsigned int>(20, 1),
+                    calls,
+                    complementarity,
+                    {},
+                    20));
+    calls.clear();
+    report("held sets changing, iterates repeating",
            run_held({1e-3, 2e-3},
                     std::vector<unsigned int>(20, 1),
                     calls,

@@ -150,9 +150,9 @@ namespace Common
           "The step test accepts an equilibrium residual (relative to the "
           "external load) up to this bound; above it a vanishing step means "
           "that the residual and the linearisation disagree, and the "
-          "iteration fails, unless the residual still falls by a factor of "
-          "ten per iteration (the small steps of a stiff system, such as a "
-          "stiff penalty), in which case it goes on. Dimensionless.");
+          "iteration fails, unless the last step still halved the residual "
+          "(the small steps of a stiff system, such as a stiff penalty or a "
+          "bent strip), in which case it goes on. Dimensionless.");
       }
       prm.leave_subsection();
     }
@@ -381,14 +381,15 @@ namespace Common
                   // A vanishing step with a large residual means that the
                   // residual and the linearisation disagree: no round-off
                   // explains it, and the state is not accepted. A residual
-                  // that still falls by a decade per iteration is no such
-                  // disagreement: a stiff system (a stiff penalty) makes
-                  // small steps; the iteration goes on.
+                  // that the last step still halved is no such
+                  // disagreement: a stiff system (a stiff penalty, a bent
+                  // strip) makes small steps that still remove most of the
+                  // residual; the iteration goes on.
                   const std::size_t n_residuals = statistics.residuals.size();
                   const bool        still_falling =
                     n_residuals >= 2 &&
                     residual.equilibrium <
-                      0.1 * statistics.residuals[n_residuals - 2].equilibrium;
+                      0.5 * statistics.residuals[n_residuals - 2].equilibrium;
                   if (residual.equilibrium >
                         parameters.step_test_residual_bound &&
                       still_falling)
@@ -440,6 +441,47 @@ namespace Common
                     IO::Console::format(0.5 * before) + " for " +
                     std::to_string(n_stagnation) + " iterations)";
                   return finish();
+                }
+            }
+          // Iterates that repeat themselves while the set changes, both
+          // residuals within 1e-3 of those p iterations before for p
+          // iterations in a row (p from 2 to n_stagnation), run in a cycle
+          // that the set history does not see (holds released by a growing
+          // residual, changes made inside the iterations): they reach no
+          // equilibrium, and the step fails instead of running to its
+          // iteration limit.
+          if (one_change_per_equilibrium)
+            {
+              const auto &residuals = statistics.residuals;
+              const auto  close     = [](const double a, const double b) {
+                return std::abs(a - b) <=
+                       1e-3 * std::max(std::abs(a), std::abs(b));
+              };
+              for (unsigned int p = 2; p <= n_stagnation; ++p)
+                {
+                  if (it < one_change_since + 2 * p)
+                    break;
+                  bool repeats = true, changed = false;
+                  for (unsigned int k = it - p; k < it && repeats; ++k)
+                    repeats = close(residuals[k].equilibrium,
+                                    residuals[k - p].equilibrium) &&
+                              close(residuals[k].complementarity,
+                                    residuals[k - p].complementarity);
+                  for (unsigned int k = it - 2 * p; k < it; ++k)
+                    changed = changed || statistics.active_set_changes[k] > 0;
+                  if (repeats && changed)
+                    {
+                      statistics.failure =
+                        "the iteration repeats itself every " +
+                        std::to_string(p) +
+                        " iterations while the set changes (equilibrium "
+                        "residual " +
+                        IO::Console::format(residuals[it - 1].equilibrium) +
+                        ", complementarity residual " +
+                        IO::Console::format(residuals[it - 1].complementarity) +
+                        "): no equilibrium is reached";
+                      return finish();
+                    }
                 }
             }
           if (!hold_set && callbacks.is_cycling())

@@ -110,11 +110,15 @@ namespace Common
        * (below the step tolerance, the residual at round-off) is an
        * equilibrium even right after a change: changes that move nothing
        * (points with neither pressure nor gap) are compared too, and a
-       * violation that none of them removes fails the step. So do eight iterations of this
-       * mode that leave the set unchanged from one to the next, reach no
-       * equilibrium (to the tolerance or at round-off) and do not halve
-       * the equilibrium residual: the changes that a problem makes inside
-       * its iterations (the active-set solves of each linearisation) may
+       * violation that none of them removes fails the step. So do
+       * iterates that repeat themselves while the set changes (both
+       * residuals to 1e-3 of those p iterations before, for p iterations
+       * in a row, p from 2 to 8): a cycle that the set history does not
+       * see, held sets released by a growing residual among them. And so do
+       * eight iterations of this mode that leave the set unchanged from one to
+       * the next, reach no equilibrium (to the tolerance or at round-off) and
+       * do not halve the equilibrium residual: the changes that a problem makes
+       * inside its iterations (the active-set solves of each linearisation) may
        * then trade two sets back and forth, and the iterates repeat in
        * pairs. A nonlinear problem judges its
        * sets on states out of equilibrium, and a bending body (whose
