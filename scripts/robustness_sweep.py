@@ -524,6 +524,14 @@ def main():
                     section, key = HEADLINE[app]
                     headline = summary.get(section, {}).get(key)
                 headlines[name] = headline
+                # The stabilization springs' share of the work done on the
+                # model, where the application reports it (sheet_forming).
+                stabilization_share = ""
+                if summary is not None:
+                    share = summary.get("results", {}).get(
+                        "stabilization_energy_fraction_of_forming_work")
+                    if share is not None:
+                        stabilization_share = f"{100. * share:.3g}"
                 change = ""
                 if (headline is not None and name != against
                         and headlines.get(against) not in (None, 0)):
@@ -545,6 +553,7 @@ def main():
                        "max_stabilized_solves_per_step":
                            newton.get("max_stabilized_solves_per_step", ""),
                        "max_iterations_per_solve": newton.get("max_iterations_per_solve", ""),
+                       "stabilization_energy_percent": stabilization_share,
                        "cutbacks": newton.get("n_cutbacks", ""), "wall_time_s": round(wall, 1),
                        "headline": "" if headline is None else headline,
                        "change_vs_coarse_percent": change, "change_against": against,
@@ -556,7 +565,10 @@ def main():
                       f"({str(row['max_with_cutbacks']):>3s}) solves "
                       f"{str(row['max_linear_solves_per_step_with_cutbacks']):>3s} "
                       f"stabilized {str(row['max_stabilized_solves_per_step']):>3s} "
-                      f"per solve {str(row['max_iterations_per_solve']):>3s} cutbacks "
+                      f"per solve {str(row['max_iterations_per_solve']):>3s} "
+                      + (f"energy {stabilization_share:>5s} % "
+                         if stabilization_share else "")
+                      + f"cutbacks "
                       f"{str(row['cutbacks']):>3s} {wall:7.1f} s {change:>8s} %  {detail[:100]}",
                       flush=True)
         for name, why in VARIATIONS[app]["not_available"]:

@@ -280,6 +280,27 @@ namespace SheetForming
       }
     const unsigned int n_closed = contact_problem->enforcement().n_active();
 
+    // The punch's work over forming (trapezoidal rule on the force record,
+    // from the untouched start) and the energy that the stabilization
+    // springs dissipated over the whole program, both for the full strip:
+    // the springs' share of the forming work measures how much a
+    // pseudo-transient path through a snap took from the result.
+    double forming_work = 0., last_force = 0., last_travel = 0.;
+    for (const auto &f : forces)
+      if (!released || f.time <= parameters.release.release_stage - 1. + 1e-9)
+        {
+          forming_work += 0.5 * (f.punch_force + last_force) *
+                          (f.punch_displacement - last_travel);
+          last_force  = f.punch_force;
+          last_travel = f.punch_displacement;
+        }
+    double stabilization_energy = 0.;
+    for (const double e : stepping.stabilization_energy)
+      stabilization_energy += e;
+    stabilization_energy *= full_strip_factor();
+    const double stabilization_fraction =
+      forming_work > 0. ? stabilization_energy / forming_work : 0.;
+
     if (root)
       {
         std::ofstream csv(out.path("punch_force.csv"));
@@ -336,6 +357,10 @@ namespace SheetForming
                                "",
                                n_closed);
       }
+    console.print_quantity("Punch work of forming", "N mm", forming_work);
+    console.print_quantity("Stabilization energy",
+                           "N mm",
+                           stabilization_energy);
     console.print_quantity("Largest force balance error", "", worst_balance);
 
     using Common::IO::JsonObject;
@@ -363,7 +388,11 @@ namespace SheetForming
       .set("forming_angle_end_tangent_deg", forming_angles.end_tangent)
       .set("straight_span_angle_deg",
            parameters.geometry.straight_span_angle(stroke))
-      .set("max_force_balance_relative_error", worst_balance);
+      .set("max_force_balance_relative_error", worst_balance)
+      .set("forming_work_N_mm", forming_work)
+      .set("stabilization_energy_N_mm", stabilization_energy)
+      .set("stabilization_energy_fraction_of_forming_work",
+           stabilization_fraction);
     if (released)
       results.set("angle_after_release_deg", final_angles.chord)
         .set("angle_after_release_end_tangent_deg", final_angles.end_tangent)

@@ -334,6 +334,34 @@ main()
                     {},
                     20));
   }
+  // Sets changing at every iteration with no equilibrium, given 60
+  // iterations, both residuals falling by the same rate per iteration
+  // (the equilibrium residual a fifth of the complementarity residual,
+  // which decides each change): at 1 % the Newton residual does not halve
+  // in 16 iterations, and the loop stops at iteration 33, when the
+  // smallest residual of iterations 17 to 32 is compared with that of 1 to
+  // 16 (one change per equilibrium from iteration 1). At 5 % it halves in
+  // 14, and the iteration runs to the limit (60).
+  for (const auto &[rate, name] :
+       std::vector<std::pair<double, std::string>>{{0.01, "1 %"},
+                                                   {0.05, "5 %"}})
+    {
+      std::vector<std::string> calls;
+      std::vector<double>      complementarity{1e-2}, equilibrium{1e-3};
+      for (unsigned int k = 1; k <= 60; ++k)
+        {
+          complementarity.push_back(complementarity.back() * (1. - rate));
+          equilibrium.push_back(0.2 * complementarity.back());
+        }
+      report("held sets changing, no equilibrium, residual falling " + name +
+               " per change",
+             run_held(equilibrium,
+                      std::vector<unsigned int>(60, 1),
+                      calls,
+                      complementarity,
+                      {},
+                      60));
+    }
   // A held set that converges slowly (its residual falls by 0.9 per
   // iteration, halving in fewer than 8) is no stagnation: it runs to the
   // limit (20). At 0.95 per iteration (0.66 in 8) it stops at iteration

@@ -46,6 +46,9 @@ namespace Common
           total_stabilized += stabilized;
           max_stabilized = std::max(max_stabilized, stabilized);
         }
+      double stabilization_energy = 0.;
+      for (const double e : stepping.stabilization_energy)
+        stabilization_energy += e;
       IO::JsonObject newton;
       newton.set("total_iterations", total_iterations)
         .set("max_iterations_per_step", max_iterations)
@@ -65,6 +68,8 @@ namespace Common
         .set("max_linear_solves_per_step_with_cutbacks", max_solves)
         .set("stabilized_solves", total_stabilized)
         .set("max_stabilized_solves_per_step", max_stabilized)
+        .set("stabilization_energy", stabilization_energy)
+        .set("stabilization_energy_per_step", stepping.stabilization_energy)
         .set("max_iterations_per_solve", stepping.max_iterations_per_solve);
       return newton;
     }

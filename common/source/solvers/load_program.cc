@@ -385,6 +385,8 @@ namespace Common
                   statistics.extra_solves.push_back(extra_solves);
                   extra_solves = 0;
                   statistics.stabilized_solves.push_back(stabilized_solves);
+                  statistics.stabilization_energy.push_back(
+                    newton.stabilization_energy);
                   stabilized_solves = 0;
                   cut_back          = false;
                   statistics.n_converged_on_step += newton.converged_on_step;

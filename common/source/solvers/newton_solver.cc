@@ -73,19 +73,26 @@ namespace Common
           Patterns::Double(0.),
           "Pseudo-transient continuation of a load step whose iteration "
           "fails (an unstable sheet whose contact state has no equilibrium "
-          "near the last one): the step is solved again from its start "
-          "with a spring at every free DoF to the last solution, of "
-          "stiffness factor x E int N_i dV / h^2 (E the reference modulus, "
-          "h the cell's smallest vertex distance), anchored anew at each "
-          "solution and softened by half after each solve that moves less "
-          "than the one before, until a solve moves no DoF by more than "
-          "1e-6 of the smallest cell (at most 100 solves); the springs are "
-          "then removed and the state is solved to equilibrium without "
-          "them, which alone is accepted. The path between is a "
-          "dissipative one, as a snap would take. A solve that fails "
-          "starts again from its anchor with springs four times as stiff; "
-          "if it fails with the initial springs, the step is cut back. A "
-          "step whose iteration diverges "
+          "near the last one): the step is solved again with a spring at "
+          "every free DoF to the last solution, of stiffness factor x E "
+          "int N_i dV / h^2 (E the reference modulus, h the cell's "
+          "smallest vertex distance), anchored anew at each solution and "
+          "softened by half after each solve that moves less than the one "
+          "before, until a solve moves no DoF by more than 1e-6 of the "
+          "smallest cell (at most 100 solves); the springs are then "
+          "removed and the state is solved to equilibrium without them, "
+          "which alone is accepted. The first solve starts from the failed "
+          "iteration's last iterate when that is an equilibrium of its "
+          "contact set (relative residual at most 1e3 x 'Tolerance': where "
+          "the quasi-static path ends), so that the springs carry the "
+          "snap and not the load increment; from the step's start for "
+          "other failures, and when the stabilized solves from the last "
+          "iterate fail. The path between is a dissipative one, as a "
+          "snap would take; the energy the springs dissipate (k d^2 per "
+          "solve and DoF, d its motion) is reported in summary.json. A "
+          "solve that fails starts again from its anchor with springs four "
+          "times as stiff; if it fails with the initial springs, the step "
+          "is cut back. A step whose iteration diverges "
           "(above the 'Divergence bound', a non-finite value, a matrix that "
           "cannot be factorised) is cut back first, since a smaller "
           "increment may converge at once, and takes this path only if the "
@@ -208,6 +215,9 @@ namespace Common
       // the iterations in which its equilibrium residual must halve.
       unsigned int           one_change_since = 0;
       constexpr unsigned int n_stagnation     = 8;
+      // The iterations without an equilibrium in which one change per
+      // equilibrium must halve its Newton residual.
+      constexpr unsigned int n_wander = 2 * n_stagnation;
       // The last iteration whose iterate reached an equilibrium (to the
       // tolerance or at round-off): a held set's progress.
       unsigned int last_equilibrium = 0;
@@ -482,6 +492,41 @@ namespace Common
                         "): no equilibrium is reached";
                       return finish();
                     }
+                }
+            }
+          // One change per equilibrium that reaches no equilibrium in
+          // n_wander iterations, and whose Newton residual (the larger of
+          // the two) stays above half its smallest value of the n_wander
+          // iterations before, wanders among sets without approaching a
+          // solution (iterates that nearly repeat, drifting by a few
+          // percent per period, which the test above does not see): the
+          // step fails instead of running to its iteration limit.
+          if (one_change_per_equilibrium &&
+              it >= one_change_since + 2 * n_wander &&
+              it >= last_equilibrium + n_wander)
+            {
+              const auto &residuals = statistics.residuals;
+              const auto  newton    = [&residuals](const unsigned int k) {
+                return std::max(residuals[k].equilibrium,
+                                residuals[k].complementarity);
+              };
+              double recent = std::numeric_limits<double>::infinity();
+              double before = recent;
+              for (unsigned int k = it - n_wander; k < it; ++k)
+                recent = std::min(recent, newton(k));
+              for (unsigned int k = it - 2 * n_wander; k < it - n_wander; ++k)
+                before = std::min(before, newton(k));
+              if (recent > 0.5 * before)
+                {
+                  statistics.failure =
+                    "the iteration wanders (one change per equilibrium, no "
+                    "equilibrium in " +
+                    std::to_string(n_wander) +
+                    " iterations, and the smallest residual in them, " +
+                    IO::Console::format(recent) + ", is not half of the " +
+                    IO::Console::format(before) + " of the " +
+                    std::to_string(n_wander) + " before)";
+                  return finish();
                 }
             }
           if (!hold_set && callbacks.is_cycling())

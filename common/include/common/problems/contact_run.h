@@ -70,9 +70,12 @@ namespace Common
      * extra_solves_per_step, max_linear_solves_per_step_with_cutbacks),
      * stabilized_solves and max_stabilized_solves_per_step (the solves
      * with springs of steps that had no equilibrium near the last state,
-     * failed attempts included) and max_iterations_per_solve (the most
-     * Newton iterations of one solve, plain or stabilized, over every
-     * attempt).
+     * failed attempts included), stabilization_energy and
+     * stabilization_energy_per_step (the energy that their springs
+     * dissipated, NewtonStatistics::stabilization_energy, in the model's
+     * units: N mm, per mm of depth in plane strain) and
+     * max_iterations_per_solve (the most Newton iterations of one solve,
+     * plain or stabilized, over every attempt).
      */
     IO::JsonObject
     newton_summary(const Solvers::LoadSteppingStatistics &stepping);

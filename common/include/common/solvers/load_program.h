@@ -226,6 +226,12 @@ namespace Common
        * accepted step, its failed attempts included; the same length as
        * newton_iterations. */
       std::vector<unsigned int> stabilized_solves;
+      /** Energy dissipated by the stabilization springs
+       * (NewtonStatistics::stabilization_energy) in each accepted step's
+       * solve, in the model's units (N mm, per mm of depth in plane
+       * strain); the same length as newton_iterations. The states of
+       * rejected attempts are discarded, and so is their energy. */
+      std::vector<double> stabilization_energy;
       /** Most Newton iterations of one solve, over every attempt
        * (NewtonStatistics::max_iterations_per_solve). */
       unsigned int max_iterations_per_solve = 0;

@@ -168,6 +168,13 @@ namespace Common
        * stabilized path, NonlinearSolverParameters::stabilization_factor);
        * their iterations are counted in n_iterations. */
       unsigned int n_stabilized_solves = 0;
+      /** Energy dissipated by the springs of the stabilized solves: each
+       * spring acts as a dashpot of a backward-Euler pseudo-time step, and
+       * a solve that moves DoF i by d_i against the stiffness k_i
+       * dissipates k_i d_i^2. The energy that a snap releases between the
+       * last equilibrium and the next; in the model's units (N mm, per mm
+       * of depth in plane strain). 0 for a step solved without springs. */
+      double stabilization_energy = 0.;
       /** Most Newton iterations of one solve of the step: n_iterations for
        * a step solved once; with stabilized solves and multiplier updates,
        * the largest of them. */
