@@ -969,9 +969,9 @@ namespace Common
           more.active_set_changes.end());
       };
 
-      // Pseudo-transient continuation: a failed step is solved again with
-      // springs to the last solution, anchored anew at each one, until a
-      // solve moves nothing; then without them. A step whose
+      // Pseudo-transient continuation: a failed step is solved again from
+      // its start with springs to the last solution, anchored anew at each
+      // one, until a solve moves nothing; then without them. A step whose
       // iteration diverged is cut back first: its increment was too large
       // for Newton, and a smaller one may converge at once; the retried
       // step takes the stabilized path if it fails too.
@@ -979,112 +979,74 @@ namespace Common
           nonlinear_solver_parameters.stabilization_factor > 0. &&
           (!statistics.diverged || state.after_cutback))
         {
-          // The springs are anchored where the quasi-static path ends: at
-          // the failed iteration's last iterate when it is an equilibrium
-          // of its contact set (a set that alternates with another: the
-          // fold). Anchored at the accepted state, they resist the whole
-          // load increment as well, and the state they lead to depends on
-          // their stiffness; that start serves the other failures (a
-          // diverged or wandering iteration, whose last iterate is no state
-          // to start from), and the fold when its first solve fails (a node
-          // left deep inside a tool by the set that the iterate held).
-          const bool fold = !statistics.diverged &&
-                            !statistics.residuals.empty() &&
-                            statistics.residuals.back().equilibrium <=
-                              1e3 * nonlinear_solver_parameters.tolerance;
+          verbose << "  The step failed (" << statistics.failure
+                  << "); stabilized solves from its start" << std::endl;
           const std::string first_failure = statistics.failure;
+          restore();
+          geometry.set_load_state(state);
+          update_geometry();
+          contact_enforcement->begin_step();
+          setup_stabilization();
+          stabilized          = true;
+          stabilization_scale = 1.;
+          bulk_matrix_current = false;
           // The springs soften by half after each solve that moves less
           // than the one before: they carry the state past where it has no
           // equilibrium, then let it settle. A solve that fails starts
           // again from its anchor with springs four times as stiff.
-          constexpr unsigned int    max_solves = 100;
-          double                    moved      = 0.;
-          unsigned int              n_solves   = 0;
+          constexpr unsigned int max_solves = 100;
+          double                 moved      = 0.;
+          double       last_moved = std::numeric_limits<double>::infinity();
+          unsigned int n_solves   = 0;
           Solvers::NewtonStatistics again;
-          for (const bool from_last_iterate :
-               fold ? std::vector<bool>{true, false} : std::vector<bool>{false})
+          while (n_solves < max_solves)
             {
-              verbose << "  The step failed (" << statistics.failure
-                      << "); stabilized solves from "
-                      << (from_last_iterate ? "its last iterate" : "its start")
-                      << std::endl;
-              if (from_last_iterate)
-                solid_operator.restore();
-              else
-                restore();
-              geometry.set_load_state(state);
-              update_geometry();
-              contact_enforcement->begin_step();
-              setup_stabilization();
-              stabilized              = true;
-              stabilization_scale     = 1.;
-              bulk_matrix_current     = false;
-              double       last_moved = std::numeric_limits<double>::infinity();
-              double       energy     = 0.;
-              unsigned int n_here     = 0;
-              moved                   = 0.;
-              while (n_here < max_solves)
+              stabilization_anchor = solution_owned;
+              again                = newton();
+              append(again);
+              ++n_solves;
+              if (!again.converged)
                 {
-                  stabilization_anchor = solution_owned;
-                  again                = newton();
-                  append(again);
-                  ++n_here;
-                  ++n_solves;
-                  if (!again.converged)
-                    {
-                      verbose << "  Stabilized solve " << n_here
-                              << " (springs x "
-                              << IO::Console::format(stabilization_scale)
-                              << ") failed" << std::endl;
-                      if (stabilization_scale >= 1.)
-                        break;
-                      solution_owned = stabilization_anchor;
-                      solution       = solution_owned;
-                      update_geometry();
-                      stabilization_scale =
-                        std::min(1., 4. * stabilization_scale);
-                      continue;
-                    }
-                  TrilinosWrappers::MPI::Vector change = solution_owned;
-                  change -= stabilization_anchor;
-                  moved = change.linfty_norm();
-                  // The springs' work as dashpots: sum_i s k_i d_i^2 over
-                  // the DoFs that carry a spring.
-                  double dissipated = 0.;
-                  for (const auto i : locally_owned_dofs)
-                    if (!constraints_dirichlet_and_hanging_nodes.is_constrained(
-                          i))
-                      dissipated += stabilization_scale *
-                                    stabilization_stiffness(i) * change(i) *
-                                    change(i);
-                  dissipated =
-                    Utilities::MPI::sum(dissipated, mpi_communicator);
-                  energy += dissipated;
-                  verbose << "  Stabilized solve " << n_here << " (springs x "
+                  verbose << "  Stabilized solve " << n_solves << " (springs x "
                           << IO::Console::format(stabilization_scale)
-                          << "): largest motion " << IO::Console::format(moved)
-                          << " mm, dissipated "
-                          << IO::Console::format(dissipated) << " N mm"
-                          << std::endl;
-                  if (moved <= 1e-6 * smallest_cell)
+                          << ") failed" << std::endl;
+                  if (stabilization_scale >= 1.)
                     break;
-                  if (moved < last_moved)
-                    stabilization_scale *= 0.5;
-                  last_moved = moved;
+                  solution_owned = stabilization_anchor;
+                  solution       = solution_owned;
+                  update_geometry();
+                  stabilization_scale = std::min(1., 4. * stabilization_scale);
+                  continue;
                 }
-              if (again.converged && moved > 1e-6 * smallest_cell)
-                {
-                  again.converged = false;
-                  again.failure   = "still moving after " +
-                                  std::to_string(max_solves) + " solves";
-                }
-              // The states of a start that failed are discarded, and so is
-              // the energy of its path.
-              if (again.converged)
-                {
-                  statistics.stabilization_energy += energy;
-                  break;
-                }
+              TrilinosWrappers::MPI::Vector change = solution_owned;
+              change -= stabilization_anchor;
+              moved = change.linfty_norm();
+              // The springs' work as dashpots: sum_i s k_i d_i^2 over the
+              // DoFs that carry a spring.
+              double dissipated = 0.;
+              for (const auto i : locally_owned_dofs)
+                if (!constraints_dirichlet_and_hanging_nodes.is_constrained(i))
+                  dissipated += stabilization_scale *
+                                stabilization_stiffness(i) * change(i) *
+                                change(i);
+              dissipated = Utilities::MPI::sum(dissipated, mpi_communicator);
+              statistics.stabilization_energy += dissipated;
+              verbose << "  Stabilized solve " << n_solves << " (springs x "
+                      << IO::Console::format(stabilization_scale)
+                      << "): largest motion " << IO::Console::format(moved)
+                      << " mm, dissipated " << IO::Console::format(dissipated)
+                      << " N mm" << std::endl;
+              if (moved <= 1e-6 * smallest_cell)
+                break;
+              if (moved < last_moved)
+                stabilization_scale *= 0.5;
+              last_moved = moved;
+            }
+          if (again.converged && moved > 1e-6 * smallest_cell)
+            {
+              again.converged = false;
+              again.failure =
+                "still moving after " + std::to_string(max_solves) + " solves";
             }
           statistics.n_stabilized_solves = n_solves;
           stabilized                     = false;
