@@ -283,8 +283,8 @@ namespace SheetForming
     // The punch's work over forming (trapezoidal rule on the force record,
     // from the untouched start) and the energy that the stabilization
     // springs dissipated over the whole program, both for the full strip:
-    // the springs' share of the forming work measures how much a
-    // pseudo-transient path through a snap took from the result.
+    // the springs' path is not committed, and their share of the forming
+    // work says how hard they held the state, not what the result lost.
     double forming_work = 0., last_force = 0., last_travel = 0.;
     for (const auto &f : forces)
       if (!released || f.time <= parameters.release.release_stage - 1. + 1e-9)
