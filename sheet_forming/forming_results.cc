@@ -15,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace SheetForming
 {
@@ -361,6 +362,25 @@ namespace SheetForming
     console.print_quantity("Stabilization energy",
                            "N mm",
                            stabilization_energy);
+    console.print_quantity("Stabilization energy / forming work",
+                           "%",
+                           100. * stabilization_fraction);
+    // Beyond a small share the springs, not the quasi-static path, decided
+    // where the strip went through its snaps: static stabilization is
+    // commonly held to a few percent of the work done on the body.
+    constexpr double max_stabilization_fraction = 0.05;
+    if (stabilization_fraction > max_stabilization_fraction)
+      {
+        std::ostringstream share;
+        share << std::setprecision(3) << 100. * stabilization_fraction;
+        console.stream() << "  Warning: the stabilization springs dissipated "
+                         << share.str()
+                         << " % of the punch's forming work (more than "
+                         << 100. * max_stabilization_fraction
+                         << " %): the result depends on their path through "
+                            "the steps that had no equilibrium near the last."
+                         << std::endl;
+      }
     console.print_quantity("Largest force balance error", "", worst_balance);
 
     using Common::IO::JsonObject;
