@@ -303,7 +303,7 @@ def robustness_section(results):
             ("max_stabilized_solves_per_step", "most stabilized solves in a step"),
             ("max_iterations_per_solve", "most iterations of one solve"),
             ("stabilization_energy_percent",
-             "stabilization energy [% of forming work]"),
+             "stabilization energy [% of forming work; the run warns above 5]"),
             ("cutbacks", "cutbacks"), ("wall_time_s", "wall [s]"),
             ("change_vs_coarse_percent", "headline change [%]"),
             ("change_against", "against"), ("detail", "detail")])
