@@ -149,6 +149,14 @@ namespace ReynoldsRoller
                         "Cells across the elastic roller's ring, from the "
                         "hub to the rim (uniform); ignored for the rigid "
                         "roller.");
+      prm.declare_entry(
+        "Interior node perturbation",
+        "0",
+        Patterns::Double(0., 0.3),
+        "Move every vertex inside the strip in a random direction by up to "
+        "this fraction of the shortest edge at it (fixed seed: the same mesh "
+        "at every run), for tests of distorted meshes; 0 for the regular "
+        "mesh. Dimensionless, 0 to 0.3.");
     }
     prm.leave_subsection();
   }
@@ -167,6 +175,7 @@ namespace ReynoldsRoller
       n_cells_around_roller =
         prm.get_integer("Number of cells around the roller");
       n_cells_across_ring = prm.get_integer("Number of cells across the ring");
+      interior_perturbation = prm.get_double("Interior node perturbation");
       n_cells_width =
         three_d ? prm.get_integer("Number of cells across the width") : 1;
     }

@@ -70,6 +70,10 @@ namespace ReynoldsRoller
     unsigned int n_cells_length, n_cells_thickness, n_cells_width;
     /** Cells of the elastic roller's ring around it and across it. */
     unsigned int n_cells_around_roller, n_cells_across_ring;
+    /** Largest random move of the strip's interior vertices, as a fraction
+     * of the shortest edge at each (Common::Geometry::
+     * perturb_interior_vertices()); 0 for the regular mesh. */
+    double interior_perturbation = 0.;
   };
 
   /** Subsection "Supports": the strip's bottom. */

@@ -146,6 +146,10 @@ namespace ReynoldsRoller
                                                  BoundaryIds::ends);
             }
       }
+    Common::Geometry::perturb_interior_vertices(
+      strip,
+      m.interior_perturbation,
+      "Mesh: 'Interior node perturbation'");
     if (g.elastic_roller)
       {
         // The ring from the hub to the rim about the axis (concentric

@@ -140,6 +140,17 @@ def penalty(factor, modulus):
             ("Contact", "Penalty stiffness", (factor * modulus, PER_CELL))]
 
 
+def elastic_roller(modulus):
+    """reynolds_roller's elastic roller (a ring from a hub of radius 15 mm
+    to the rim, neo-Hookean in its volumetric-isochoric split, nu = 0.3)
+    with Young's modulus modulus (MPa), as in reynolds_roller_mu03_elastic.prm."""
+    return [("Geometry", "Roller", "elastic"),
+            ("Geometry", "Roller hub radius", "15"),
+            ("Roller material", "Young's modulus", f"{modulus:g}"),
+            ("Roller material", "Poisson's ratio", "0.3"),
+            ("Roller material", "Finite strain model", "neo-Hookean split")]
+
+
 MUS = [0, 0.05, 0.3, 1, 5]
 RATIOS = [1e-4, 1e-2, 1, 1e2, 1e4]
 STEPS = [1, 2, 5, 50]
@@ -315,12 +326,19 @@ VARIATIONS = {
             penalty(f, RUBBER_MODULUS) + friction(0)
             + [("Supports", "Bottom free in x from stage", "0")])
            for f in PENALTY_FACTORS]
-        + [("nodal tool gap", [("Contact", "Rigid tool gap", "nodal")])],
+        + [("nodal tool gap", [("Contact", "Rigid tool gap", "nodal")]),
+           ("interior nodes perturbed 30 %",
+            [("Mesh", "Interior node perturbation", "0.3")])]
+        # The coarse case's roller is rigid (the specification's S2 model);
+        # the elastic roller (reynolds_roller_mu03_elastic.prm) spans the
+        # stiffness ratio, E of the roller over that of the rubber (10 MPa):
+        # steel is 2.1e4.
+        + [(f"elastic roller, E ratio {r:g}", elastic_roller(r * RUBBER_MODULUS))
+           for r in RATIOS],
         "not_available": [
-            ("stiffness ratio, rigid bodies", "the roller is rigid (the specification's "
-             "S2 model); an elastic roller is not built yet"),
-            ("non-matching meshes", "the roller is an analytic surface: there is one mesh"),
-            ("interior nodes perturbed", "the strip's mesh has no perturbation entry yet"),
+            ("non-matching meshes", "the roller is an analytic surface or, elastic, "
+             "meshed apart from the strip with its own cells (Mesh/Number of cells "
+             "around the roller); there is no size ratio entry"),
             ("initial gaps and overlaps", "the specification places the roller touching "
              "the strip")],
     },
