@@ -334,11 +334,20 @@ VARIATIONS = {
         # stiffness ratio, E of the roller over that of the rubber (10 MPa):
         # steel is 2.1e4.
         + [(f"elastic roller, E ratio {r:g}", elastic_roller(r * RUBBER_MODULUS))
-           for r in RATIOS],
+           for r in RATIOS]
+        # Non-matching meshes: the steel ring's rim faces (2 pi 30 mm / n;
+        # 48 cells, 3.9 mm, in the production file) against the strip's
+        # 10 mm cells of the coarse case, their headline against the same
+        # ring with 48 cells; a ring of fewer than 8 cells (a ratio above
+        # 2.4) is refused.
+        + [("elastic steel roller", elastic_roller(210000.))]
+        + [(f"elastic steel roller, rim faces {label} of the strip's cells",
+            elastic_roller(210000.) + [("Mesh", "Number of cells around the roller", str(n))],
+            "elastic steel roller")
+           for label, n in (("1/8", 151), ("1/2", 38), ("2", 9))],
         "not_available": [
-            ("non-matching meshes", "the roller is an analytic surface or, elastic, "
-             "meshed apart from the strip with its own cells (Mesh/Number of cells "
-             "around the roller); there is no size ratio entry"),
+            ("non-matching meshes, size ratio 8", "the elastic ring's rim would need "
+             "fewer than its 8 cells at least; ratios 1/8 to 2 are swept with it"),
             ("initial gaps and overlaps", "the specification places the roller touching "
              "the strip")],
     },
