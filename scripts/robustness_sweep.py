@@ -128,6 +128,15 @@ def tiny_first_step(channel, value, n_steps):
             ("Load program/Stage 2", channel, f"{value:g}")]
 
 
+def staged_program(stages):
+    """The entries of a load program of the given stages, each a list of
+    (key, value) pairs of its subsection "Load program/Stage k"."""
+    entries = [("Load program", "Number of stages", str(len(stages)))]
+    for k, stage in enumerate(stages, start=1):
+        entries += [(f"Load program/Stage {k}", key, value) for key, value in stage]
+    return entries
+
+
 def degree(p):
     return [("Mesh", "Element degree", str(p))]
 
@@ -277,24 +286,16 @@ VARIATIONS = {
         # A first stage of 1e-6 of the stroke in one step, then the
         # production program (forming, release, withdrawal).
         + [("first step 1e-6 of the stroke",
-            [("Load program", "Number of stages", "4"),
-             ("Load program/Stage 1", "Name", "first step"),
-             ("Load program/Stage 1", "Number of steps", "1"),
-             ("Load program/Stage 1", "Punch displacement", "2.85e-05"),
-             ("Load program/Stage 1", "Die displacement", "0"),
-             ("Load program/Stage 2", "Name", "forming"),
-             ("Load program/Stage 2", "Number of steps", "57"),
-             ("Load program/Stage 2", "Punch displacement", "28.5"),
-             ("Load program/Stage 2", "Die displacement", "0"),
-             ("Load program/Stage 3", "Name", "release"),
-             ("Load program/Stage 3", "Number of steps", "20"),
-             ("Load program/Stage 3", "Punch displacement", "28"),
-             ("Load program/Stage 3", "Die displacement", "0.5"),
-             ("Load program/Stage 4", "Name", "withdrawal"),
-             ("Load program/Stage 4", "Number of steps", "160"),
-             ("Load program/Stage 4", "Punch displacement", "-1.5"),
-             ("Load program/Stage 4", "Die displacement", "30"),
-             ("Release", "Release stage", "3")])],
+            staged_program([
+                [("Name", "first step"), ("Number of steps", "1"),
+                 ("Punch displacement", "2.85e-05"), ("Die displacement", "0")],
+                [("Name", "forming"), ("Number of steps", "57"),
+                 ("Punch displacement", "28.5"), ("Die displacement", "0")],
+                [("Name", "release"), ("Number of steps", "20"),
+                 ("Punch displacement", "28"), ("Die displacement", "0.5")],
+                [("Name", "withdrawal"), ("Number of steps", "160"),
+                 ("Punch displacement", "-1.5"), ("Die displacement", "30")]])
+            + [("Release", "Release stage", "3")])],
         # The penalties fail cleanly after minutes of iterations,
         # stabilized solves and cutbacks (10 and 100 E/h after 99 and
         # 176 s beside another run: the set alternates between two
@@ -322,23 +323,14 @@ VARIATIONS = {
         + [(f"{n} rolling steps", [("Load program/Stage 3", "Number of steps", str(n))])
            for n in STEPS]
         + [("first step 1e-6 of the indentation",
-            [("Load program", "Number of stages", "4"),
-             ("Supports", "Bottom free in x from stage", "3"),
-             ("Load program/Stage 1", "Number of steps", "1"),
-             ("Load program/Stage 1", "Indentation", "1e-06"),
-             ("Load program/Stage 2", "Name", "pressing"),
-             ("Load program/Stage 2", "Number of steps", "2"),
-             ("Load program/Stage 2", "Indentation", "1"),
-             ("Load program/Stage 2", "Roller angle", "0"),
-             ("Load program/Stage 2", "Bottom x release", "0"),
-             ("Load program/Stage 3", "Name", "release"),
-             ("Load program/Stage 3", "Number of steps", "1"),
-             ("Load program/Stage 3", "Indentation", "1"),
-             ("Load program/Stage 3", "Roller angle", "0"),
-             ("Load program/Stage 3", "Bottom x release", "1"),
-             ("Load program/Stage 4", "Name", "rolling"),
-             ("Load program/Stage 4", "Number of steps", "1"),
-             ("Load program/Stage 4", "Roller angle", "2")])]
+            staged_program([
+                [("Number of steps", "1"), ("Indentation", "1e-06")],
+                [("Name", "pressing"), ("Number of steps", "2"), ("Indentation", "1"),
+                 ("Roller angle", "0"), ("Bottom x release", "0")],
+                [("Name", "release"), ("Number of steps", "1"), ("Indentation", "1"),
+                 ("Roller angle", "0"), ("Bottom x release", "1")],
+                [("Name", "rolling"), ("Number of steps", "1"), ("Roller angle", "2")]])
+            + [("Supports", "Bottom free in x from stage", "3")])]
         + [(f"Q{p}", degree(p)) for p in (1, 2)]
         + [(f"penalty {f:g} E/h, mu 0",
             penalty(f, RUBBER_MODULUS) + friction(0)
