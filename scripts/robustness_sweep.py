@@ -118,16 +118,6 @@ def steps(n):
     return [("Load program/Stage 1", "Number of steps", str(n))]
 
 
-def tiny_first_step(channel, value, n_steps):
-    """A first stage to 1e-6 of the load in one step, then the load in
-    n_steps steps (the channel's end value is value)."""
-    return [("Load program", "Number of stages", "2"),
-            ("Load program/Stage 1", "Number of steps", "1"),
-            ("Load program/Stage 1", channel, f"{1e-6 * value:g}"),
-            ("Load program/Stage 2", "Number of steps", str(n_steps)),
-            ("Load program/Stage 2", channel, f"{value:g}")]
-
-
 def staged_program(stages):
     """The entries of a load program of the given stages, each a list of
     (key, value) pairs of its subsection "Load program/Stage k"."""
@@ -135,6 +125,13 @@ def staged_program(stages):
     for k, stage in enumerate(stages, start=1):
         entries += [(f"Load program/Stage {k}", key, value) for key, value in stage]
     return entries
+
+
+def tiny_first_step(channel, value, n_steps):
+    """A first stage to 1e-6 of the load in one step, then the load in
+    n_steps steps (the channel's end value is value)."""
+    return staged_program([[("Number of steps", "1"), (channel, f"{1e-6 * value:g}")],
+                           [("Number of steps", str(n_steps)), (channel, f"{value:g}")]])
 
 
 def degree(p):
