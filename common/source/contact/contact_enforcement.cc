@@ -154,10 +154,17 @@ namespace Common
     template <int dim>
     void
     ContactEnforcement<dim>::add_constraints(
-      AffineConstraints<double> &constraints,
-      const VectorType          &u) const
+      AffineConstraints<double>                             &constraints,
+      const VectorType                                      &u,
+      const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives,
+      TrialCorrections                                      *corrections) const
     {
-      normal->add_constraints(coupling, contact_state, u, constraints);
+      normal->add_constraints(coupling,
+                              contact_state,
+                              u,
+                              constraints,
+                              gap_derivatives,
+                              corrections);
     }
 
 
@@ -171,7 +178,8 @@ namespace Common
       const VectorType                &bulk_residual,
       const IndexSet                  &locally_owned,
       MatrixType                      &matrix,
-      VectorType                      &residual) const
+      VectorType                      &residual,
+      const TrialCorrections          *corrections) const
     {
       friction->assemble(coupling,
                          contact_state,
@@ -181,7 +189,8 @@ namespace Common
                          bulk_residual,
                          locally_owned,
                          matrix,
-                         residual);
+                         residual,
+                         corrections);
     }
 
 

@@ -615,6 +615,15 @@ namespace Common
 
 
     template <int dim>
+    bool
+    CurrentMortarGeometry<dim>::linearises_rows() const
+    {
+      return tools.empty();
+    }
+
+
+
+    template <int dim>
     void
     CurrentMortarGeometry<dim>::set_rigid_tool_gap(const RigidToolGap gap)
     {

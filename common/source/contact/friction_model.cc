@@ -61,7 +61,8 @@ namespace Common
                                 const VectorType &,
                                 const IndexSet &,
                                 MatrixType &,
-                                VectorType &) const
+                                VectorType &,
+                                const TrialCorrections *) const
     {}
 
 
@@ -153,10 +154,11 @@ namespace Common
                                    const AffineConstraints<double> &constraints,
                                    const VectorType                &u,
                                    const MatrixType                &bulk_matrix,
-                                   const VectorType &bulk_residual,
-                                   const IndexSet   &locally_owned,
-                                   MatrixType       &matrix,
-                                   VectorType       &residual) const
+                                   const VectorType       &bulk_residual,
+                                   const IndexSet         &locally_owned,
+                                   MatrixType             &matrix,
+                                   VectorType             &residual,
+                                   const TrialCorrections *corrections) const
     {
       if (!has_friction())
         return;
@@ -246,6 +248,8 @@ namespace Common
                       K(a, b) += k / row.weight * B_t2(a) * B_t2(b);
                   }
               }
+          if (corrections != nullptr)
+            corrections->extend_columns(dofs, K, r);
           // As the square distribute_local_to_global() with matrix and
           // vector: the inhomogeneities of constrained columns move to the
           // right-hand side, then rows and columns are condensed.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -141,6 +142,67 @@ namespace Common
 
 
 
+      /**
+       * The TrialCorrection of secondary node j, whose normal condition was
+       * written to @p constraints from the fixed rows, solved for its
+       * component @p c: from the full derivative @p derivative of its
+       * weighted gap @p gap, du_c = -(gap + sum_q dg/du_q du_q) / (dg/du_c)
+       * over the node's other components and its primary partners' DoFs,
+       * less the constraint written. None if |dg/du_c| is less than half
+       * the fixed rows' |D n_c|, which a valid linearisation of a closed
+       * node does not give.
+       */
+      template <int dim>
+      void
+      add_trial_correction(
+        const MortarCoupling<dim> &coupling,
+        const unsigned int         j,
+        const unsigned int         c,
+        const double               gap,
+        const std::vector<std::pair<types::global_dof_index, double>>
+                                        &derivative,
+        const AffineConstraints<double> &constraints,
+        TrialCorrections                &corrections)
+      {
+        const MortarRow<dim> &row  = coupling.row(j);
+        const auto           &node = coupling.secondary_surface().node(j);
+        std::map<types::global_dof_index, double> own_and_primary;
+        for (unsigned int d = 0; d < dim; ++d)
+          own_and_primary[node.dofs[d]] = 0.;
+        for (const auto &entry : row.primary_weights)
+          for (unsigned int d = 0; d < dim; ++d)
+            own_and_primary[coupling.primary_node(entry.first).dofs[d]] = 0.;
+        for (const auto &[dof, value] : derivative)
+          {
+            const auto it = own_and_primary.find(dof);
+            if (it != own_and_primary.end())
+              it->second += value;
+          }
+        const types::global_dof_index dof   = node.dofs[c];
+        const double                  pivot = own_and_primary[dof];
+        if (!(std::abs(pivot) >= 0.5 * row.weight * std::abs(row.normal[c])))
+          return;
+
+        std::map<types::global_dof_index, double> difference;
+        for (const auto &[q, value] : own_and_primary)
+          if (q != dof)
+            difference[q] = -value / pivot;
+        const auto *written = constraints.get_constraint_entries(dof);
+        Assert(written != nullptr, ExcInternalError());
+        for (const auto &[q, value] : *written)
+          difference[q] -= value;
+        TrialCorrection correction;
+        correction.dof = dof;
+        correction.inhomogeneity =
+          -gap / pivot - constraints.get_inhomogeneity(dof);
+        for (const auto &[q, value] : difference)
+          if (value != 0.)
+            correction.entries.emplace_back(q, value);
+        corrections.add(std::move(correction));
+      }
+
+
+
       /** "(x, y)" or "(x, y, z)": the position of secondary node j (mm). */
       template <int dim>
       std::string
@@ -198,10 +260,12 @@ namespace Common
     template <int dim>
     void
     DualLagrangeEnforcement<dim>::add_constraints(
-      const MortarCoupling<dim> &coupling,
-      const ContactState<dim>   &state,
-      const VectorType          &u,
-      AffineConstraints<double> &constraints) const
+      const MortarCoupling<dim>                             &coupling,
+      const ContactState<dim>                               &state,
+      const VectorType                                      &u,
+      AffineConstraints<double>                             &constraints,
+      const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives,
+      TrialCorrections                                      *corrections) const
     {
       const FreeDirections<dim> &directions = state.directions();
       last_diagnostics                      = ConstraintDiagnostics();
@@ -233,6 +297,9 @@ namespace Common
               coupling.weighted_gap(j, u) / row.weight * row.normal +
                 state.slip_increment(j, coupling.relative_displacement(j, u)) :
               Tensor<1, dim>();
+          const bool correct = corrections != nullptr &&
+                               gap_derivatives != nullptr &&
+                               !(*gap_derivatives)[j].empty();
           if (status == PointStatus::stick && all_free)
             {
               for (unsigned int d = 0; d < dim; ++d)
@@ -338,10 +405,18 @@ namespace Common
               if (std::abs(M * row.normal[e]) > 1e-14 * row.weight)
                 entries.emplace_back(coupling.primary_node(k).dofs[e],
                                      M * row.normal[e] * scale);
+          const double gap = coupling.weighted_gap(j, u);
           constraints.add_line(node.dofs[c]);
           constraints.add_entries(node.dofs[c], entries);
-          constraints.set_inhomogeneity(node.dofs[c],
-                                        coupling.weighted_gap(j, u) * scale);
+          constraints.set_inhomogeneity(node.dofs[c], gap * scale);
+          if (correct)
+            add_trial_correction(coupling,
+                                 j,
+                                 c,
+                                 gap,
+                                 (*gap_derivatives)[j],
+                                 constraints,
+                                 *corrections);
         }
 
       if (rows.is_distributed())
@@ -490,10 +565,13 @@ namespace Common
 
     template <int dim>
     void
-    PenaltyEnforcement<dim>::add_constraints(const MortarCoupling<dim> &,
-                                             const ContactState<dim> &,
-                                             const VectorType &,
-                                             AffineConstraints<double> &) const
+    PenaltyEnforcement<dim>::add_constraints(
+      const MortarCoupling<dim> &,
+      const ContactState<dim> &,
+      const VectorType &,
+      AffineConstraints<double> &,
+      const typename NormalEnforcement<dim>::GapDerivatives *,
+      TrialCorrections *) const
     {}
 
 

@@ -10,12 +10,14 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -332,7 +334,12 @@ namespace Common
                            dsp,
                            mpi_communicator);
       bulk_matrix_current = false;
-      if (contact_enforcement->has_friction())
+      // Friction reads the bulk tangent's rows, the trial corrections
+      // (multipliers, ContactGeometry::linearises_rows()) its columns.
+      if (contact_enforcement->has_friction() ||
+          (contact_parameters.enforcement ==
+             Contact::Enforcement::lagrange_multiplier &&
+           geometry.linearises_rows()))
         {
           bulk_matrix.reinit(system_matrix);
           assemble_bulk_matrix();
@@ -398,8 +405,17 @@ namespace Common
       // The bulk tangent (friction reads its rows) and the bulk residual
       // (friction, and the linearised residual below) come from the same
       // integration of the cells as the system.
-      const bool friction            = contact_enforcement->has_friction();
-      const bool needs_bulk_tangent  = friction && !bulk_matrix_current;
+      const bool friction = contact_enforcement->has_friction();
+      const bool lagrange = contact_parameters.enforcement ==
+                            Contact::Enforcement::lagrange_multiplier;
+      // With multipliers in the current configuration, the trial
+      // corrections need the full derivatives of the gaps and the bulk
+      // tangent's columns.
+      typename Contact::NormalEnforcement<dim>::GapDerivatives derivatives;
+      const bool full_derivatives = lagrange && geometry.linearises_rows() &&
+                                    closed_gap_derivatives(false, derivatives);
+      const bool needs_bulk_tangent =
+        (friction || full_derivatives) && !bulk_matrix_current;
       const bool needs_bulk_residual = friction || uses_linearized_tractions();
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
@@ -419,9 +435,13 @@ namespace Common
               constraints.set_inhomogeneity(dof, value - solution(dof));
             }
         }
-      if (contact_parameters.enforcement ==
-          Contact::Enforcement::lagrange_multiplier)
-        contact_enforcement->add_constraints(constraints, solution);
+      trial_corrections.clear();
+      if (lagrange)
+        contact_enforcement->add_constraints(
+          constraints,
+          solution,
+          full_derivatives ? &derivatives : nullptr,
+          full_derivatives ? &trial_corrections : nullptr);
       constraints.close();
 
       system_matrix = 0.;
@@ -475,21 +495,7 @@ namespace Common
         {
           // Where the rows follow the configuration, the penalty force's
           // tangent needs the full derivative of the gap.
-          const auto &coupling = geometry.coupling();
-          const auto &rows     = contact_enforcement->rows();
-          typename Contact::NormalEnforcement<dim>::GapDerivatives derivatives(
-            coupling.n_rows());
-          std::vector<bool> closed(coupling.n_rows(), false);
-          for (unsigned int j = 0; j < coupling.n_rows(); ++j)
-            closed[j] = rows.is_owned(j) && contact_enforcement->is_active(j);
-          const bool full = geometry.weighted_gap_derivative(
-            closed,
-            solution,
-            [&](const unsigned int            j,
-                const types::global_dof_index dof,
-                const double                  value) {
-              derivatives[j].emplace_back(dof, value);
-            });
+          const bool full = closed_gap_derivatives(true, derivatives);
           contact_enforcement->assemble_penalty(constraints,
                                                 solution,
                                                 locally_owned_dofs,
@@ -503,7 +509,10 @@ namespace Common
                                              residual_vector,
                                              locally_owned_dofs,
                                              system_matrix,
-                                             system_rhs);
+                                             system_rhs,
+                                             &trial_corrections);
+      if (full_derivatives)
+        add_trial_corrections();
       system_matrix.compress(VectorOperation::add);
       system_rhs.compress(VectorOperation::add);
       solve_times.assembly += IO::seconds_since(start);
@@ -522,6 +531,8 @@ namespace Common
           linear_tolerance;
       linear_solver.solve(system_matrix, newton_update, system_rhs, tolerance);
       constraints.distribute(newton_update);
+      if (full_derivatives)
+        apply_trial_corrections();
       solve_times.linear_solve += IO::seconds_since(solve_start);
 
       // The linearised bulk residual at the new iterate, r(u) + r'(u) du,
@@ -581,30 +592,176 @@ namespace Common
           tractions[j] =
             -contact_enforcement->pressure(j) * coupling.row(j).normal +
             contact_enforcement->tangential_traction(j);
-      FullMatrix<double>                   cell_matrix;
-      Vector<double>                       cell_rhs;
-      std::vector<types::global_dof_index> dofs;
+      FullMatrix<double> column;
+      Vector<double>     rhs;
       geometry.contact_force_derivative(
         tractions,
         [&](const std::vector<types::global_dof_index> &row_dofs,
-            const types::global_dof_index               column,
+            const types::global_dof_index               dof,
             const std::vector<double>                  &values) {
-          dofs = row_dofs;
-          auto position =
-            std::find(dofs.begin(), dofs.end(), column) - dofs.begin();
-          if (position == static_cast<long>(dofs.size()))
-            dofs.push_back(column);
-          cell_matrix.reinit(dofs.size(), dofs.size());
-          cell_rhs.reinit(dofs.size());
+          column.reinit(row_dofs.size(), 1);
+          rhs.reinit(row_dofs.size());
           for (unsigned int i = 0; i < row_dofs.size(); ++i)
-            cell_matrix(i, position) = values[i];
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
-                                                 dofs,
-                                                 system_matrix,
-                                                 system_rhs,
-                                                 true);
+            column(i, 0) = values[i];
+          std::vector<types::global_dof_index> column_dofs{dof};
+          trial_corrections.extend_columns(column_dofs, column, rhs);
+          distribute_block(row_dofs, column_dofs, column, rhs);
         });
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::distribute_block(
+      const std::vector<types::global_dof_index> &row_dofs,
+      const std::vector<types::global_dof_index> &column_dofs,
+      const FullMatrix<double>                   &block,
+      const Vector<double>                       &rhs)
+    {
+      // A square local system over rows and columns, so that the
+      // inhomogeneities of constrained columns move to the right-hand side.
+      std::vector<types::global_dof_index> dofs = row_dofs;
+      std::vector<unsigned int>            position(column_dofs.size());
+      for (unsigned int b = 0; b < column_dofs.size(); ++b)
+        {
+          position[b] =
+            std::find(dofs.begin(), dofs.end(), column_dofs[b]) - dofs.begin();
+          if (position[b] == dofs.size())
+            dofs.push_back(column_dofs[b]);
+        }
+      FullMatrix<double> cell_matrix(dofs.size(), dofs.size());
+      Vector<double>     cell_rhs(dofs.size());
+      for (unsigned int a = 0; a < row_dofs.size(); ++a)
+        {
+          for (unsigned int b = 0; b < column_dofs.size(); ++b)
+            cell_matrix(a, position[b]) += block(a, b);
+          cell_rhs(a) = rhs(a);
+        }
+      constraints.distribute_local_to_global(cell_matrix,
+                                             cell_rhs,
+                                             dofs,
+                                             system_matrix,
+                                             system_rhs,
+                                             true);
+    }
+
+
+
+    template <int dim>
+    bool
+    ContactNewtonProblem<dim>::closed_gap_derivatives(
+      const bool                                                owned_only,
+      typename Contact::NormalEnforcement<dim>::GapDerivatives &derivatives)
+      const
+    {
+      if (!geometry.is_current_configuration())
+        return false;
+      const auto &coupling = geometry.coupling();
+      const auto &rows     = contact_enforcement->rows();
+      derivatives.assign(coupling.n_rows(), {});
+      std::vector<bool> closed(coupling.n_rows(), false);
+      for (unsigned int j = 0; j < coupling.n_rows(); ++j)
+        closed[j] = (owned_only ? rows.is_owned(j) : rows.is_held(j)) &&
+                    contact_enforcement->is_active(j);
+      return geometry.weighted_gap_derivative(
+        closed,
+        solution,
+        [&](const unsigned int            j,
+            const types::global_dof_index dof,
+            const double value) { derivatives[j].emplace_back(dof, value); });
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::add_trial_corrections()
+    {
+      // Collective: every rank takes part in the products.
+      if (Utilities::MPI::max(static_cast<unsigned int>(
+                                trial_corrections.all().size()),
+                              mpi_communicator) == 0)
+        return;
+      // P_G - P_B as a matrix (rows: the corrected DoFs this rank owns),
+      // and its inhomogeneities as a vector.
+      DynamicSparsityPattern        dsp(dof_handler.n_dofs(),
+                                 dof_handler.n_dofs(),
+                                 locally_owned_dofs);
+      TrilinosWrappers::MPI::Vector inhomogeneities(locally_owned_dofs,
+                                                    mpi_communicator);
+      for (const auto &correction : trial_corrections.all())
+        if (locally_owned_dofs.is_element(correction.dof))
+          {
+            for (const auto &entry : correction.entries)
+              dsp.add(correction.dof, entry.first);
+            inhomogeneities(correction.dof) = correction.inhomogeneity;
+          }
+      inhomogeneities.compress(VectorOperation::insert);
+      TrilinosWrappers::SparseMatrix difference;
+      difference.reinit(locally_owned_dofs,
+                        locally_owned_dofs,
+                        dsp,
+                        mpi_communicator);
+      for (const auto &correction : trial_corrections.all())
+        if (locally_owned_dofs.is_element(correction.dof))
+          for (const auto &[q, value] : correction.entries)
+            difference.set(correction.dof, q, value);
+      difference.compress(VectorOperation::insert);
+
+      // The bulk tangent times both, row by row through the constraints
+      // (P_B^T).
+      TrilinosWrappers::SparseMatrix product;
+      bulk_matrix.mmult(product, difference);
+      TrilinosWrappers::MPI::Vector shift(locally_owned_dofs, mpi_communicator);
+      bulk_matrix.vmult(shift, inhomogeneities);
+      std::vector<types::global_dof_index> row(1), columns;
+      FullMatrix<double>                   block;
+      Vector<double>                       rhs(1);
+      for (const auto i : locally_owned_dofs)
+        {
+          columns.clear();
+          std::vector<double> values;
+          if (product.row_length(i) > 0)
+            {
+              const auto end = product.end(i);
+              for (auto entry = product.begin(i); entry != end; ++entry)
+                if (entry->value() != 0.)
+                  {
+                    columns.push_back(entry->column());
+                    values.push_back(entry->value());
+                  }
+            }
+          if (columns.empty() && shift(i) == 0.)
+            continue;
+          row[0] = i;
+          rhs(0) = -shift(i);
+          block.reinit(1, columns.size());
+          for (unsigned int b = 0; b < columns.size(); ++b)
+            block(0, b) = values[b];
+          distribute_block(row, columns, block, rhs);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ContactNewtonProblem<dim>::apply_trial_corrections()
+    {
+      TrilinosWrappers::MPI::Vector update(locally_owned_dofs,
+                                           locally_relevant_dofs,
+                                           mpi_communicator);
+      update = newton_update;
+      for (const auto &correction : trial_corrections.all())
+        if (locally_owned_dofs.is_element(correction.dof))
+          {
+            double change = correction.inhomogeneity;
+            for (const auto &[q, coefficient] : correction.entries)
+              change += coefficient * update(q);
+            newton_update(correction.dof) += change;
+          }
+      newton_update.compress(VectorOperation::add);
     }
 
 

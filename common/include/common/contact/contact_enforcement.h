@@ -204,10 +204,19 @@ namespace Common
        * Dirichlet constraints (it is not closed here). Nothing with a
        * penalty (NormalEnforcement::add_constraints()).
        * @param[in] u Current displacement (ghosted).
+       * @param[in] gap_derivatives The full derivatives of the weighted
+       * gaps where the rows follow the configuration (null where the fixed
+       * rows' gradient is exact).
+       * @param[out] corrections If not null, receives the difference of
+       * the nodes' full linearised conditions from their constraints
+       * (TrialCorrection).
        */
       void
       add_constraints(dealii::AffineConstraints<double> &constraints,
-                      const VectorType                  &u) const;
+                      const VectorType                  &u,
+                      const typename NormalEnforcement<dim>::GapDerivatives
+                                       *gap_derivatives = nullptr,
+                      TrialCorrections *corrections     = nullptr) const;
 
       /**
        * @brief Coulomb friction: add the tangential traction
@@ -224,6 +233,8 @@ namespace Common
        * of the slipping nodes (which must be locally owned).
        * @param[in] bulk_residual f_ext - f_int at the current u (N,
        * ghosted), condensed like @p bulk_matrix.
+       * @param[in] corrections If not null, the iteration's trial
+       * corrections (FrictionModel::assemble()).
        */
       void
       assemble_friction(const dealii::AffineConstraints<double> &constraints,
@@ -232,7 +243,8 @@ namespace Common
                         const VectorType                        &bulk_residual,
                         const dealii::IndexSet                  &locally_owned,
                         MatrixType                              &matrix,
-                        VectorType &residual) const;
+                        VectorType                              &residual,
+                        const TrialCorrections *corrections = nullptr) const;
 
       /** @brief True if Coulomb friction with mu > 0 is enforced. */
       bool

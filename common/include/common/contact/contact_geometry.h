@@ -92,6 +92,20 @@ namespace Common
       }
 
       /**
+       * @brief True if the Newton iteration should linearise the contact
+       * conditions with the full derivative of the weighted gaps
+       * (weighted_gap_derivative(); ContactNewtonProblem's trial
+       * corrections) rather than with the fixed rows' gradient. False by
+       * default: in the reference configuration the fixed rows' gradient
+       * is exact.
+       */
+      virtual bool
+      linearises_rows() const
+      {
+        return false;
+      }
+
+      /**
        * @brief Why the state of the last update() cannot be accepted, or
        * an empty string if it can. A secondary node inside a rigid tool
        * deeper than the search distance is no longer seen by the pairing:

@@ -30,6 +30,7 @@
 #include <common/contact/contact_parameters.h>
 #include <common/contact/contact_state.h>
 #include <common/contact/mortar_coupling.h>
+#include <common/contact/trial_corrections.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/tensor.h>
@@ -123,6 +124,9 @@ namespace Common
        * of the slipping nodes (which must be locally owned).
        * @param[in] bulk_residual f_ext - f_int at @p u (N, ghosted),
        * condensed like @p bulk_matrix.
+       * @param[in] corrections If not null, the iteration's trial
+       * corrections: the tangent's columns move to the full linearisation
+       * of the contact conditions (TrialCorrections::extend_columns()).
        */
       virtual void
       assemble(const MortarCoupling<dim>               &coupling,
@@ -133,7 +137,8 @@ namespace Common
                const VectorType                        &bulk_residual,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType                              &residual) const = 0;
+               VectorType                              &residual,
+               const TrialCorrections                  *corrections) const = 0;
     };
 
 
@@ -174,7 +179,8 @@ namespace Common
                const VectorType                        &bulk_residual,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType &residual) const override;
+               VectorType                              &residual,
+               const TrialCorrections *corrections) const override;
     };
 
 
@@ -238,7 +244,8 @@ namespace Common
                const VectorType                        &bulk_residual,
                const dealii::IndexSet                  &locally_owned,
                MatrixType                              &matrix,
-               VectorType &residual) const override;
+               VectorType                              &residual,
+               const TrialCorrections *corrections) const override;
 
     private:
       const double mu;

@@ -30,6 +30,7 @@
 #include <common/contact/contact_parameters.h>
 #include <common/contact/contact_state.h>
 #include <common/contact/mortar_coupling.h>
+#include <common/contact/trial_corrections.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -101,12 +102,20 @@ namespace Common
        * rank holds (ContactState::rows()). Nothing for a penalty. May be
        * collective (the diagnostics are summed over the ranks).
        * @param[in] u Current displacement (ghosted).
+       * @param[in] gap_derivatives The full derivatives of the weighted
+       * gaps where the rows follow the configuration; null, or an empty
+       * entry, where the fixed rows' gradient is exact.
+       * @param[out] corrections If not null, receives the TrialCorrection
+       * of every constrained DoF whose condition the full derivative
+       * changes.
        */
       virtual void
       add_constraints(const MortarCoupling<dim>         &coupling,
                       const ContactState<dim>           &state,
                       const VectorType                  &u,
-                      dealii::AffineConstraints<double> &constraints) const = 0;
+                      dealii::AffineConstraints<double> &constraints,
+                      const GapDerivatives              *gap_derivatives,
+                      TrialCorrections                  *corrections) const = 0;
 
       /**
        * @brief Add tangent and residual of the terms of the closed nodes
@@ -206,13 +215,27 @@ namespace Common
        * counted (diagnostics()) and reported once on the standard error
        * stream. So is a closed node on which no constraint can act (every
        * component fixed, or every one along the normal while it slips).
+       *
+       * Where @p gap_derivatives holds a node's full derivative, a node
+       * held by its normal condition alone (slip, or no free tangent) gets
+       * a TrialCorrection: its linearised condition
+       * \f$g_j + \sum_q \partial g_j/\partial u_q\,\Delta u_q = 0\f$
+       * over its own DoFs and its primary partners' (the terms of the other
+       * secondary nodes, which the fixed rows' gradient leaves out as well,
+       * are left out), less the constraint written here. A sticking node's
+       * constraint stays that of the fixed rows: with its normal condition
+       * from the full derivative and its tangential ones from the fixed
+       * rows, the rigid turn of tests/common/current_contact_objectivity_01
+       * took 5 Newton iterations per step instead of 4.
        */
       void
       add_constraints(
-        const MortarCoupling<dim>         &coupling,
-        const ContactState<dim>           &state,
-        const VectorType                  &u,
-        dealii::AffineConstraints<double> &constraints) const override;
+        const MortarCoupling<dim>                             &coupling,
+        const ContactState<dim>                               &state,
+        const VectorType                                      &u,
+        dealii::AffineConstraints<double>                     &constraints,
+        const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives,
+        TrialCorrections *corrections) const override;
 
       /** @brief Nothing: the multipliers are condensed. */
       void
@@ -292,10 +315,12 @@ namespace Common
       /** @brief Nothing: a penalty adds no constraints. */
       void
       add_constraints(
-        const MortarCoupling<dim>         &coupling,
-        const ContactState<dim>           &state,
-        const VectorType                  &u,
-        dealii::AffineConstraints<double> &constraints) const override;
+        const MortarCoupling<dim>                             &coupling,
+        const ContactState<dim>                               &state,
+        const VectorType                                      &u,
+        dealii::AffineConstraints<double>                     &constraints,
+        const typename NormalEnforcement<dim>::GapDerivatives *gap_derivatives,
+        TrialCorrections *corrections) const override;
 
       /**
        * @brief Residual \f$p B\f$ and tangent

@@ -26,8 +26,10 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <functional>
 #include <map>
@@ -308,9 +310,56 @@ namespace Common
       /** Current configuration with Lagrange multipliers: add the
        * geometric stiffness of contact at the nodal tractions of the last
        * residual evaluation (ContactGeometry::contact_force_derivative())
-       * to the system. */
+       * to the system, and its part of the trial corrections
+       * (add_trial_corrections()). */
       void
       add_geometric_contact_stiffness();
+
+      /** The full derivatives of the weighted gaps of the closed rows this
+       * rank holds (ContactGeometry::weighted_gap_derivative()) into
+       * @p derivatives; false where the fixed rows' gradient is exact (the
+       * reference configuration). Owned rows only if @p owned_only. */
+      bool
+      closed_gap_derivatives(
+        const bool                                                owned_only,
+        typename Contact::NormalEnforcement<dim>::GapDerivatives &derivatives)
+        const;
+
+      /**
+       * Lagrange multipliers, where the geometry linearises its rows
+       * (ContactGeometry::linearises_rows()): the constraints of the
+       * closed nodes come from the fixed rows' gradient B, so that
+       * the condensed system tests equilibrium with the contact forces as
+       * they are distributed, while the increment must satisfy the full
+       * linearisation G of the gaps (trial_corrections, G less B). With P_B
+       * and P_G the maps of the two constraint sets, the Newton system is
+       * P_B^T A P_G: add P_B^T A (P_G - P_B) to the matrix and the
+       * inhomogeneities' share to the right-hand side. A is the bulk
+       * tangent here; the geometric stiffness of contact and the friction
+       * tangent take their share where they are assembled
+       * (TrialCorrections::extend_columns()). The converged state is that
+       * of the fixed rows' constraints: these terms change the iteration
+       * only.
+       */
+      void
+      add_trial_corrections();
+
+      /** Move the increment of each corrected DoF from the fixed rows'
+       * constraint to the full linearisation (trial_corrections). */
+      void
+      apply_trial_corrections();
+
+      /** Add the block @p block (rows @p row_dofs, columns @p column_dofs)
+       * of the tangent and the right-hand side @p rhs at its rows to the
+       * system, distributed through the iteration's constraints (the
+       * inhomogeneities of constrained columns move to the right-hand
+       * side). */
+      void
+      distribute_block(
+        const std::vector<dealii::types::global_dof_index> &row_dofs,
+        const std::vector<dealii::types::global_dof_index> &column_dofs,
+        const dealii::FullMatrix<double>                   &block,
+        const dealii::Vector<double>                       &rhs);
 
       /** Build the sparsity pattern and the matrices for the current
        * coupling. */
@@ -413,6 +462,8 @@ namespace Common
 
       dealii::AffineConstraints<double> constraints_dirichlet_and_hanging_nodes;
       dealii::AffineConstraints<double> constraints;
+      /** The iteration's TrialCorrections of the closed nodes. */
+      Contact::TrialCorrections              trial_corrections;
       dealii::TrilinosWrappers::SparseMatrix system_matrix;
       dealii::TrilinosWrappers::SparseMatrix bulk_matrix;
       bool                                   bulk_matrix_current = false;
