@@ -201,6 +201,19 @@ namespace ReynoldsRoller
 
 
   template <int dim>
+  double
+  RollingProblem<dim>::contact_modulus() const
+  {
+    const double rubber = parameters.rubber_material.youngs_modulus;
+    if (!parameters.geometry.elastic_roller)
+      return rubber;
+    const double roller = parameters.roller_material.youngs_modulus;
+    return 1. / (1. / rubber + 1. / roller);
+  }
+
+
+
+  template <int dim>
   Common::Contact::RigidTool<dim>
   RollingProblem<dim>::make_roller() const
   {
@@ -337,7 +350,7 @@ namespace ReynoldsRoller
            std::make_pair(MaterialIds::roller_carrier,
                           parameters.rubber_material)}),
       std::move(geometry),
-      parameters.rubber_material.youngs_modulus);
+      contact_modulus());
 
     // Held in x while pressing.
     if (parameters.supports.bottom_free_stage != 1)

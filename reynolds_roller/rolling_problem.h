@@ -130,6 +130,14 @@ namespace ReynoldsRoller
     Common::Contact::RigidTool<dim>
     make_roller() const;
 
+    /** The modulus that scales the complementarity constants (MPa): the
+     * rubber's against the rigid roller; against the elastic one, the
+     * moduli of the two bodies in series, 1 / (1 / E_rubber + 1 / E_roller),
+     * so that a roller softer than the rubber is not judged by the
+     * rubber's stiffness. */
+    double
+    contact_modulus() const;
+
     /** The roller's axis (0, H/2 + R) (mm). */
     Point<dim>
     roller_centre() const;
