@@ -276,7 +276,11 @@ namespace Common
       if (!geometry.is_current_configuration())
         return;
       const auto start = std::chrono::steady_clock::now();
-      if (geometry.update(solution))
+      // A rank's rows may meet a primary node outside the pattern while
+      // another's do not: every rank builds the new pattern (collective).
+      const bool changed = geometry.update(solution);
+      if (Utilities::MPI::max(static_cast<unsigned int>(changed),
+                              mpi_communicator) > 0)
         {
           // The direct solver refers to the matrix it factorised. The
           // linearised residual of the step just taken is still to be
