@@ -297,9 +297,6 @@ namespace Common
               coupling.weighted_gap(j, u) / row.weight * row.normal +
                 state.slip_increment(j, coupling.relative_displacement(j, u)) :
               Tensor<1, dim>();
-          const bool correct = corrections != nullptr &&
-                               gap_derivatives != nullptr &&
-                               !(*gap_derivatives)[j].empty();
           if (status == PointStatus::stick && all_free)
             {
               for (unsigned int d = 0; d < dim; ++d)
@@ -409,7 +406,8 @@ namespace Common
           constraints.add_line(node.dofs[c]);
           constraints.add_entries(node.dofs[c], entries);
           constraints.set_inhomogeneity(node.dofs[c], gap * scale);
-          if (correct)
+          if (corrections != nullptr && gap_derivatives != nullptr &&
+              !(*gap_derivatives)[j].empty())
             add_trial_correction(coupling,
                                  j,
                                  c,
