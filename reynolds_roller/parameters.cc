@@ -67,6 +67,16 @@ namespace ReynoldsRoller
                         "boundary of the ring, whose nodes are turned "
                         "rigidly by the channel 'Roller angle'; below the "
                         "roller radius. Units: mm.");
+      prm.declare_entry("Initial gap",
+                        "0",
+                        Patterns::Double(),
+                        "Distance by which the roller starts above the "
+                        "strip's top (negative: an overlap, the roller "
+                        "starts pressed into it), for tests of initial gaps; "
+                        "0 for the benchmark. The roller's axis is at "
+                        "(0, H/2 + R + gap); 'Indentation' moves the strip "
+                        "toward it from there. At most 1 % of the roller "
+                        "radius either way. Units: mm.");
     }
     prm.leave_subsection();
   }
@@ -93,8 +103,12 @@ namespace ReynoldsRoller
       width     = Common::IO::get_positive_length(prm, s, "Width");
       elastic_roller = (prm.get("Roller") == "elastic");
       hub_radius = Common::IO::get_positive_length(prm, s, "Roller hub radius");
+      initial_gap = prm.get_double("Initial gap");
     }
     prm.leave_subsection();
+    AssertThrow(std::abs(initial_gap) <= 0.01 * roller_radius,
+                ExcMessage("Geometry: 'Initial gap' must be at most 1 % of "
+                           "the roller radius either way."));
     AssertThrow(!elastic_roller || hub_radius < roller_radius,
                 ExcMessage("Geometry: 'Roller hub radius' must be below "
                            "'Roller radius'."));

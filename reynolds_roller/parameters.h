@@ -22,7 +22,8 @@ namespace ReynoldsRoller
 
   /** Subsection "Geometry" (../shared/specs/reynolds_roller.md section
    * 2): the strip x in [-L1, L2], y in [-H/2, H/2]; the roller's centre
-   * (0, H/2 + R), so that it touches the strip's top at (0, H/2). */
+   * (0, H/2 + R), so that it touches the strip's top at (0, H/2), raised
+   * by the initial gap of the robustness tests. */
   struct GeometryParameters
   {
     static void
@@ -48,6 +49,9 @@ namespace ReynoldsRoller
     /** True for the elastic steel roller (a meshed ring turned by its
      * hub), false for the rigid one (an analytic circle). */
     bool elastic_roller;
+    /** Distance by which the roller starts above the strip's top (mm;
+     * negative: an overlap); 0 for the benchmark. */
+    double initial_gap;
     /** Radius of the elastic roller's hub, the inner boundary of the ring
      * that turns rigidly (mm). */
     double hub_radius;

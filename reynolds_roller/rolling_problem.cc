@@ -192,9 +192,9 @@ namespace ReynoldsRoller
   Point<dim>
   RollingProblem<dim>::roller_centre() const
   {
-    Point<dim> centre;
-    centre[1] =
-      0.5 * parameters.geometry.thickness + parameters.geometry.roller_radius;
+    Point<dim>  centre;
+    const auto &g = parameters.geometry;
+    centre[1]     = 0.5 * g.thickness + g.roller_radius + g.initial_gap;
     return centre;
   }
 
@@ -219,7 +219,7 @@ namespace ReynoldsRoller
   {
     const auto    &g = parameters.geometry;
     const double   R = g.roller_radius;
-    const Point<2> centre(0., 0.5 * g.thickness + R);
+    const Point<2> centre(roller_centre()[0], roller_centre()[1]);
     // A full circle, counterclockwise (the roller on its left); its seam
     // starts behind the contact zone and meets the strip only after most
     // of a turn, where the circle is as smooth as anywhere.

@@ -138,7 +138,7 @@ namespace ReynoldsRoller
     double
     contact_modulus() const;
 
-    /** The roller's axis (0, H/2 + R) (mm). */
+    /** The roller's axis (0, H/2 + R + initial gap) (mm). */
     Point<dim>
     roller_centre() const;
 

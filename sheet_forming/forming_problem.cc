@@ -151,7 +151,8 @@ namespace SheetForming
 
 
   // The punch: a circle of radius Rp about (0, t + Rp), touching the
-  // sheet's top on the axis, continued upward by its vertical side. The
+  // sheet's top on the axis (raised by the initial gap of the robustness
+  // tests), continued upward by its vertical side. The
   // die, material below: the flat top y = 0 from outside the sheet's end,
   // the shoulder fillet about (R2 + R3, -R3) and the cavity about
   // (0, -R3). Both arcs reach a little past the axis. A profile keeps its
@@ -168,11 +169,12 @@ namespace SheetForming
     const double   R3   = g.shoulder_radius;
     const double   xs   = g.shoulder_centre_x();
     const double   t    = g.thickness;
-    const Point<2> punch_centre(0., t + Rp);
+    const Point<2> punch_centre(0., t + Rp + g.initial_punch_gap);
 
     Common::Contact::RigidProfile punch;
     punch.add_arc(punch_centre, Rp, -0.5 * pi - past, 0.);
-    punch.add_line(Point<2>(Rp, t + Rp), Point<2>(Rp, t + 3. * Rp));
+    punch.add_line(Point<2>(Rp, punch_centre[1]),
+                   Point<2>(Rp, punch_centre[1] + 2. * Rp));
 
     Common::Contact::RigidProfile die;
     die.add_line(Point<2>(g.sheet_half_length + 2. * R2, 0.), Point<2>(xs, 0.));

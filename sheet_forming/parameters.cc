@@ -21,8 +21,9 @@ namespace SheetForming
     const double r_punch    = punch_radius + 0.5 * thickness;
     const double r_shoulder = shoulder_radius + 0.5 * thickness;
     const double dx         = shoulder_centre_x();
-    const double dy         = -shoulder_radius - (thickness + punch_radius - d);
-    const double distance   = std::hypot(dx, dy);
+    const double dy =
+      -shoulder_radius - (thickness + punch_radius + initial_punch_gap - d);
+    const double distance = std::hypot(dx, dy);
     // The line crosses between the centres (the sheet lies outside the
     // punch and above the shoulder): it makes the angle
     // asin((r_punch + r_shoulder) / distance) with the line of centres.
@@ -45,6 +46,15 @@ namespace SheetForming
                         "Radius Rp of the cylindrical punch; its lowest "
                         "point touches the sheet's top at the start. "
                         "Units: mm.");
+      prm.declare_entry("Initial punch gap",
+                        "0",
+                        Patterns::Double(),
+                        "Distance by which the punch starts above the "
+                        "sheet's top (negative: an overlap, the punch "
+                        "starts pressed into it), for tests of initial "
+                        "gaps; 0 for the benchmark. 'Punch displacement' "
+                        "moves it from there. At most 10 % of the sheet "
+                        "thickness either way. Units: mm.");
       prm.declare_entry("Die radius",
                         "25",
                         Patterns::Double(),
@@ -107,8 +117,12 @@ namespace SheetForming
       thickness = Common::IO::get_positive_length(prm, s, "Sheet thickness");
       width     = Common::IO::get_positive_length(prm, s, "Sheet width");
       three_d   = (prm.get("Dimension") == "3d strip");
+      initial_punch_gap = prm.get_double("Initial punch gap");
     }
     prm.leave_subsection();
+    AssertThrow(std::abs(initial_punch_gap) <= 0.1 * thickness,
+                ExcMessage("Geometry: 'Initial punch gap' must be at most "
+                           "10 % of the sheet thickness either way."));
     AssertThrow(die_radius >= punch_radius + thickness,
                 ExcMessage("Geometry: the sheet does not fit between punch "
                            "and die: 'Die radius' must be at least 'Punch "

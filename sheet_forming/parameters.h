@@ -32,6 +32,9 @@ namespace SheetForming
 
     /** Radius of the punch Rp (mm). */
     double punch_radius;
+    /** Distance by which the punch starts above the sheet's top (mm;
+     * negative: an overlap); 0 for the benchmark. */
+    double initial_punch_gap;
     /** Radius R2 of the die's cavity (mm). */
     double die_radius;
     /** Radius R3 of the die's shoulder fillet (mm). */
@@ -56,7 +59,7 @@ namespace SheetForming
      * section 6.2 measures it) of a sheet that leaves the punch and the
      * die's shoulder along their common tangent, straight in between: the
      * tangent of the two circles the mid-surface follows when it lies on
-     * the punch (radius Rp + t/2 about (0, t + Rp - d)) and on the
+     * the punch (radius Rp + t/2 about (0, t + Rp + gap - d)) and on the
      * shoulder (radius R3 + t/2 about (R2 + R3, -R3)), at punch
      * displacement @p d (mm) with the die in place. The tools alone fix
      * it: neither the material nor friction enter. */
