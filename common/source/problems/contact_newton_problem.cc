@@ -1080,6 +1080,21 @@ namespace Common
           };
         }
 
+      // The solid's multipliers (augmented Lagrangian) follow the iterate
+      // within each solve, at most max_multiplier_updates() times; the
+      // loop after the solve below then finds them converged, or fails the
+      // step once that many updates have not sufficed.
+      unsigned int n_solve_augmentations = 0;
+      if (solid_operator.max_multiplier_updates() > 0)
+        callbacks.update_multipliers = [&]() {
+          if (n_solve_augmentations >= solid_operator.max_multiplier_updates())
+            return false;
+          if (!solid_operator.update_multipliers(dof_handler, solution))
+            return false;
+          ++n_solve_augmentations;
+          return true;
+        };
+
       // A diverging iterate may produce a non-finite value: Release builds
       // see it in the residual, Debug builds at deal.II's check, which
       // throws. Either way the step fails and is cut back. An iterate far
@@ -1088,7 +1103,8 @@ namespace Common
       // in a linear one the model is at fault.
       const auto newton = [&]() {
         Solvers::NewtonStatistics result;
-        first_iteration = true;
+        first_iteration       = true;
+        n_solve_augmentations = 0;
         try
           {
             result = Solvers::solve_newton(nonlinear_solver_parameters,
@@ -1117,6 +1133,7 @@ namespace Common
       // Statistics of a further solve of the same step join the step's.
       const auto append = [&statistics](const Solvers::NewtonStatistics &more) {
         statistics.n_iterations += more.n_iterations;
+        statistics.n_augmentations += more.n_augmentations;
         statistics.max_iterations_per_solve =
           std::max(statistics.max_iterations_per_solve,
                    more.max_iterations_per_solve);
@@ -1235,7 +1252,7 @@ namespace Common
       while (statistics.converged &&
              solid_operator.update_multipliers(dof_handler, solution))
         {
-          if (statistics.n_augmentations ==
+          if (statistics.n_augmentations >=
               solid_operator.max_multiplier_updates())
             {
               statistics.converged = false;

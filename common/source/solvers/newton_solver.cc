@@ -370,6 +370,18 @@ namespace Common
               statistics.diverged = true;
               return finish();
             }
+          // The multipliers of an augmented Lagrangian follow an iterate
+          // near its equilibrium; the iteration goes on with the new ones.
+          if (callbacks.update_multipliers && n_changed == 0 &&
+              residual.complementarity < multiplier_update_bound &&
+              residual.equilibrium < multiplier_update_bound &&
+              callbacks.update_multipliers())
+            {
+              ++statistics.n_augmentations;
+              verbose << "    Multipliers updated ("
+                      << statistics.n_augmentations << ")" << std::endl;
+              continue;
+            }
           if (n_changed == 0 && residual.complementarity < parameters.tolerance)
             {
               if (residual.equilibrium < parameters.tolerance)

@@ -132,7 +132,27 @@ namespace Common
        * update_one_point() led back to a set held earlier in the step
        * (every other change led to a set seen before). */
       std::function<bool()> revisits_held_set;
+      /** Optional: update the multipliers of the constraints that the
+       * problem enforces by an augmented Lagrangian at the current iterate
+       * (SolidOperator::update_multipliers()); returns true if they
+       * changed. Called after an iteration that leaves the active set
+       * unchanged and brings both residuals below
+       * multiplier_update_bound; if the
+       * multipliers change, the iteration goes on with them
+       * (NewtonStatistics::n_augmentations counts the updates), and a state
+       * converges only once they need no update. The multipliers follow
+       * the iterate as it converges, instead of a Newton solve to the
+       * tolerance after each update. */
+      std::function<bool()> update_multipliers;
     };
+
+    /** The equilibrium and complementarity residuals (relative, as
+     * NonlinearSolverParameters::tolerance) below which an iterate with an
+     * unchanged active set updates the multipliers of an
+     * augmented Lagrangian (NewtonCallbacks::update_multipliers): close
+     * enough to its equilibrium that the constraint's violation there is
+     * the one the update should remove. */
+    constexpr double multiplier_update_bound = 1e-6;
 
     /**
      * @brief Outcome of one Newton solve.
@@ -152,9 +172,10 @@ namespace Common
       bool                        diverged = false;
       std::vector<NewtonResidual> residuals;
       std::vector<unsigned int>   active_set_changes;
-      /** Newton solves repeated after an update of the solid's
-       * multipliers (augmented Lagrangian); their iterations are counted
-       * in n_iterations. */
+      /** Updates of the solid's multipliers (augmented Lagrangian): within
+       * the iteration (NewtonCallbacks::update_multipliers), or each
+       * followed by another Newton solve whose iterations are counted in
+       * n_iterations. */
       unsigned int n_augmentations = 0;
       /** Solves of first iterations beyond their first
        * (NonlinearSolverParameters::max_first_iteration_solves), each an
