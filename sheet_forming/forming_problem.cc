@@ -168,8 +168,7 @@ namespace SheetForming
     const double   R2   = g.die_radius;
     const double   R3   = g.shoulder_radius;
     const double   xs   = g.shoulder_centre_x();
-    const double   t    = g.thickness;
-    const Point<2> punch_centre(0., t + Rp + g.initial_punch_gap);
+    const Point<2> punch_centre(0., g.punch_centre_y());
 
     Common::Contact::RigidProfile punch;
     punch.add_arc(punch_centre, Rp, -0.5 * pi - past, 0.);

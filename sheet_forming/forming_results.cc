@@ -143,8 +143,7 @@ namespace SheetForming
       const double pi = numbers::PI;
       const double Rp = g.punch_radius, R2 = g.die_radius,
                    R3 = g.shoulder_radius, xs = g.shoulder_centre_x();
-      const double yp =
-        g.thickness + Rp + g.initial_punch_gap - shape.punch_displacement;
+      const double           yp = g.punch_centre_y() - shape.punch_displacement;
       const double           yd = -shape.die_displacement;
       constexpr unsigned int m  = 100;
       std::ofstream          csv(out.path("tools_" + tag + ".csv"));

@@ -16,14 +16,21 @@ namespace SheetForming
 
 
   double
+  GeometryParameters::punch_centre_y() const
+  {
+    return thickness + punch_radius + initial_punch_gap;
+  }
+
+
+
+  double
   GeometryParameters::straight_span_angle(const double d) const
   {
     const double r_punch    = punch_radius + 0.5 * thickness;
     const double r_shoulder = shoulder_radius + 0.5 * thickness;
     const double dx         = shoulder_centre_x();
-    const double dy =
-      -shoulder_radius - (thickness + punch_radius + initial_punch_gap - d);
-    const double distance = std::hypot(dx, dy);
+    const double dy         = -shoulder_radius - (punch_centre_y() - d);
+    const double distance   = std::hypot(dx, dy);
     // The line crosses between the centres (the sheet lies outside the
     // punch and above the shoulder): it makes the angle
     // asin((r_punch + r_shoulder) / distance) with the line of centres.

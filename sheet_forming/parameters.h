@@ -55,6 +55,11 @@ namespace SheetForming
     double
     shoulder_centre_x() const;
 
+    /** y of the punch's centre at the start, t + Rp + the initial punch
+     * gap (mm); its x is 0, and the punch displacement d lowers it. */
+    double
+    punch_centre_y() const;
+
     /** The flange angle (deg, from the downward vertical, as the spec's
      * section 6.2 measures it) of a sheet that leaves the punch and the
      * die's shoulder along their common tangent, straight in between: the
