@@ -36,6 +36,7 @@
 
 #include <common/solvers/newton_solver.h>
 
+#include "../scripted_newton.h"
 #include "../tests.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -52,14 +53,7 @@ using namespace Common::Solvers;
 
 namespace
 {
-  /** One scripted iteration. */
-  struct Iteration
-  {
-    double       step;
-    double       equilibrium;
-    double       complementarity;
-    unsigned int n_changed;
-  };
+  using ScriptedNewton::Iteration;
 
   /** Run the loop on a script; the last entry repeats when it runs out. */
   NewtonStatistics
@@ -77,23 +71,17 @@ namespace
     parameters.linear_tolerance_factor = factor;
     parameters.divergence_bound        = divergence_bound;
 
-    unsigned int    k = 0;
-    NewtonCallbacks callbacks;
-    callbacks.assemble_solve_and_update = [&](const double tolerance) {
-      if (linear_tolerances)
-        linear_tolerances->push_back(tolerance);
-      return script[std::min<std::size_t>(k, script.size() - 1)].step;
-    };
-    callbacks.evaluate_residual = [&]() {
-      const auto    &s = script[std::min<std::size_t>(k, script.size() - 1)];
-      NewtonResidual r;
-      r.equilibrium     = s.equilibrium;
-      r.complementarity = s.complementarity;
-      return r;
-    };
-    callbacks.update_active_set = [&]() {
-      return script[std::min<std::size_t>(k++, script.size() - 1)].n_changed;
-    };
+    unsigned int    k         = 0;
+    NewtonCallbacks callbacks = ScriptedNewton::callbacks(script, k);
+    if (linear_tolerances)
+      {
+        const auto play = callbacks.assemble_solve_and_update;
+        callbacks.assemble_solve_and_update =
+          [play, linear_tolerances](const double tolerance) {
+            linear_tolerances->push_back(tolerance);
+            return play(tolerance);
+          };
+      }
     // After iteration k, k sets have been updated.
     callbacks.is_cycling = [&]() {
       return cycling_from > 0 && k >= cycling_from;

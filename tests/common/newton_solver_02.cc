@@ -15,6 +15,7 @@
 
 #include <common/solvers/newton_solver.h>
 
+#include "../scripted_newton.h"
 #include "../tests.h"
 
 #include <deal.II/base/conditional_ostream.h>
@@ -28,14 +29,7 @@ using namespace Common::Solvers;
 
 namespace
 {
-  /** One scripted iteration. */
-  struct Iteration
-  {
-    double       step;
-    double       equilibrium;
-    double       complementarity;
-    unsigned int n_changed;
-  };
+  using ScriptedNewton::Iteration;
 
   /** Run the loop on a script (the last entry repeats); the multipliers
    * change at the first @p n_updates calls of the callback, which each
@@ -53,27 +47,7 @@ namespace
     parameters.step_tolerance = step_tolerance;
 
     unsigned int    k = 0, n_calls = 0;
-    NewtonCallbacks callbacks;
-    const auto      entry = [&]() -> const Iteration      &{
-      return script[std::min<std::size_t>(k, script.size() - 1)];
-    };
-    callbacks.assemble_solve_and_update = [&](const double) {
-      return entry().step;
-    };
-    callbacks.evaluate_residual = [&]() {
-      NewtonResidual r;
-      r.equilibrium     = entry().equilibrium;
-      r.complementarity = entry().complementarity;
-      return r;
-    };
-    callbacks.update_active_set = [&]() {
-      const unsigned int n = entry().n_changed;
-      ++k;
-      return n;
-    };
-    callbacks.is_cycling = []() {
-      return false;
-    };
+    NewtonCallbacks callbacks = ScriptedNewton::callbacks(script, k);
     if (n_updates >= 0)
       callbacks.update_multipliers = [&]() {
         const bool changed = n_calls < static_cast<unsigned int>(n_updates);
