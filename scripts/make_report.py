@@ -280,7 +280,11 @@ def robustness_section(results):
            "non-matching and perturbed meshes, initial gaps and overlaps). A run converges (Newton "
            "iterations, most in a step, cutbacks, and the change of the application's headline "
            "result against the coarse case or the variation named) or fails with one line naming the cause and no "
-           "result files; a crash, a NaN, a hang or a force balance above 1e-6 is a defect.</p>"]
+           "result files; a crash, a NaN, a hang or a force balance above 1e-6 is a defect. A run that "
+           "needed the stabilized path in some step is run again without the springs: where that run "
+           "fails at the minimum increment, no sequence of equilibria with the load advancing passes "
+           "there, and the row reads 'unstable, stabilized' (physically unstable; the detail lists its "
+           "stabilized steps, and the bound of 15 iterations per step applies to the others).</p>"]
     sweep = os.path.join(results, "robustness_sweep", "robustness_sweep.json")
     if not os.path.exists(sweep):
         out.append("<p class='note'>sweep not run (python3 scripts/robustness_sweep.py)</p>")

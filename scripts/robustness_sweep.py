@@ -20,6 +20,17 @@ does: table fuzz_prm.APPS) and classifies each run:
              stabilized solves (springs to the last state, in steps with
              no equilibrium near it: total, and most in a step) and the
              most Newton iterations of one solve, plain or stabilized;
+  unstable, stabilized
+             converged as above, with the stabilized path in some step,
+             and the same variation without the springs (Nonlinear
+             solver/Stabilization factor = 0, run in the case directory
+             + '-unstabilized') fails cleanly at the minimum increment: no
+             sequence of equilibria with the load advancing passes there,
+             the variation is physically unstable, and the stabilized path
+             carries it across (check_instability()); its stabilized steps
+             are listed with their iterations and solves, and the bound of
+             15 iterations per step applies to the other steps; where the
+             run without springs converges, the row stays 'converged';
   failed     exit != 0 with one line '<app>: error: ...' on standard error
              and no result file (summary.json, profile CSV, PNG): a clean
              refusal or a solver failure reported as such;
@@ -444,6 +455,57 @@ def classify(app, case_dir, code, stopped, progressing):
     return "converged", detail, newton
 
 
+def check_instability(app, executable, case_dir, entries, time_limit, memory_limit,
+                      newton, detail):
+    """(status, detail) of a converged run that took the stabilized path in
+    some step: the variation runs again without the springs
+    (Nonlinear solver/Stabilization factor = 0), in case_dir + '-unstabilized'.
+    If that run fails cleanly at the minimum increment, no sequence of
+    equilibria with the load advancing passes there (the step is cut back
+    down to 1e-4 of its stage and still has no equilibrium near the last
+    state): the variation is physically unstable, status 'unstable,
+    stabilized', and the bound of 15 Newton iterations applies to the steps
+    that needed no springs, marked where a step exceeds it; the stabilized
+    steps are listed with their solves and the most iterations of one
+    solve. If the run without springs converges, the springs were not
+    needed and the run stays 'converged' with its marks; a defect of the
+    run without springs is the row's defect."""
+    companion = case_dir + "-unstabilized"
+    shutil.rmtree(companion, ignore_errors=True)
+    os.makedirs(companion)
+    with open(os.path.join(companion, "case.prm"), "w") as f:
+        f.write(prm_text(app, entries + [("Nonlinear solver", "Stabilization factor", "0")]))
+    tmp = companion + "-tmp"
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    code, stopped, progressing, _ = fuzz.run(
+        executable, companion, time_limit, memory_limit, env=dict(os.environ, TMPDIR=tmp))
+    shutil.rmtree(tmp, ignore_errors=True)
+    status, why, _ = classify(app, companion, code, stopped, progressing)
+    if status.startswith("DEFECT"):
+        return status, f"without the springs: {why}"
+    if status != "failed" or "minimum increment" not in why:
+        return "converged", detail + (
+            "; without the springs: " + (status if status != "failed" else why)[:120])
+    where = why.split(" (")[0]
+    steps = newton.get("iterations_per_step", [])
+    failed = newton.get("failed_attempt_iterations_per_step", [0] * len(steps))
+    springs = newton.get("stabilized_solves_per_step", [])
+    plain = [n + f for n, f, k in zip(steps, failed, springs) if k == 0]
+    stabilized = [(n + f, k) for n, f, k in zip(steps, failed, springs) if k > 0]
+    most_plain = max(plain, default=0)
+    text = (f"physically unstable: without the springs '{where}' at the minimum "
+            f"increment; {len(stabilized)} stabilized steps ("
+            + ", ".join(f"{n} it/{k} solves" for n, k in stabilized)
+            + f"), at most {newton.get('max_iterations_per_solve', '')} per solve; "
+            f"the other steps at most {most_plain}, cutbacks counted")
+    if most_plain > MAX_ITERATIONS_PER_STEP:
+        text += (f"; more than {MAX_ITERATIONS_PER_STEP} Newton iterations in a step "
+                 "without springs")
+    balance = detail.split(";")[0] if detail.startswith("force balance") else ""
+    return "unstable, stabilized", (balance + "; " if balance else "") + text
+
+
 def most_per_step(newton):
     """The most Newton iterations of a step with its cutbacks counted: the
     accepted attempt and the failed attempts before it (summary.json's
@@ -526,8 +588,12 @@ def main():
                 env=dict(os.environ, TMPDIR=tmp))
             shutil.rmtree(tmp, ignore_errors=True)
             status, detail, newton = classify(app, case_dir, code, stopped, progressing)
+            if status == "converged" and newton.get("stabilized_solves", 0):
+                status, detail = check_instability(
+                    app, executable, case_dir, entries, time_limit,
+                    args.memory_limit, newton, detail)
             summary = None
-            if status == "converged":
+            if status in ("converged", "unstable, stabilized"):
                 with open(os.path.join(case_dir, "results", "summary.json")) as f:
                     summary = json.load(f)
             return case_dir, status, detail, newton, summary, wall

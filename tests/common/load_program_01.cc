@@ -10,10 +10,10 @@
  * them: the most linear solves of a step are its iterations with cutbacks
  * plus those solves (step 1: 15 + 1 + 2 + 3 = 21; step 2: 4 + 10 = 14).
  * The stabilized solves of a step count its failed attempts' too (step 1:
- * 1 + 2 = 3), and the most iterations of one solve is the largest over
- * every attempt (7, in the first, failed one). An attempt that follows a
- * cutback of its step is marked as such (LoadState::after_cutback: the
- * second and third), and the mark ends with the accepted step.
+ * 1 + 2 = 3; listed per step), and the most iterations of one solve is the
+ * largest over every attempt (7, in the first, failed one). An attempt that
+ * follows a cutback of its step is marked as such (LoadState::after_cutback:
+ * the second and third), and the mark ends with the accepted step.
  */
 
 #include <common/io/console.h>

@@ -68,6 +68,7 @@ namespace Common
         .set("max_linear_solves_per_step_with_cutbacks", max_solves)
         .set("stabilized_solves", total_stabilized)
         .set("max_stabilized_solves_per_step", max_stabilized)
+        .set("stabilized_solves_per_step", stepping.stabilized_solves)
         .set("stabilization_energy", stabilization_energy)
         .set("stabilization_energy_per_step", stepping.stabilization_energy)
         .set("max_iterations_per_solve", stepping.max_iterations_per_solve);

@@ -68,9 +68,10 @@ namespace Common
      * n_steps_converged_on_step_tolerance, the extra active-set solves
      * (first_iteration_extra_solves, later_iterations_extra_solves,
      * extra_solves_per_step, max_linear_solves_per_step_with_cutbacks),
-     * stabilized_solves and max_stabilized_solves_per_step (the solves
-     * with springs of steps that had no equilibrium near the last state,
-     * failed attempts included), stabilization_energy and
+     * stabilized_solves, max_stabilized_solves_per_step and
+     * stabilized_solves_per_step (the solves with springs of steps that
+     * had no equilibrium near the last state, failed attempts included),
+     * stabilization_energy and
      * stabilization_energy_per_step (the energy that their springs
      * dissipated, NewtonStatistics::stabilization_energy, in the model's
      * units: N mm, per mm of depth in plane strain) and
