@@ -132,23 +132,21 @@ namespace CgsRoller
     transfinite.initialize(triangulation);
     triangulation.set_manifold(1, transfinite);
 
-    Common::Geometry::refine_global_checked(
-      triangulation,
-      parameters.mesh.n_global_refinements,
-      "Mesh: 'Number of global refinements'");
     const double L        = parameters.mesh.contact_zone_length;
     const auto   distance = [H, L](const Point<dim> &p) {
       const double dx = std::max(0., p[0] - L);
       return std::sqrt(dx * dx + (p[1] - H) * (p[1] - H));
     };
-    Common::Geometry::refine_toward<dim>(
+    Common::Geometry::refine_planned<dim>(
       triangulation,
-      distance,
-      parameters.mesh.n_contact_refinements,
-      parameters.mesh.grading_factor,
-      "Mesh: 'Number of global refinements', "
-      "'Number of contact refinements' "
-      "and 'Grading factor'");
+      parameters.mesh.n_global_refinements,
+      "Mesh: 'Number of global refinements'",
+      {{distance,
+        parameters.mesh.n_contact_refinements,
+        parameters.mesh.grading_factor,
+        "Mesh: 'Number of global refinements', "
+        "'Number of contact refinements' "
+        "and 'Grading factor'"}});
     parameters.mesh.apply_variations<dim>(triangulation,
                                           distance,
                                           MaterialIds::roller,

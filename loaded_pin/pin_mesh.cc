@@ -272,38 +272,36 @@ namespace LoadedPin
         tria.set_manifold(id, transfinite);
       }
 
-    Common::Geometry::refine_global_checked(
+    // The last set is the variation of the common mesh entries (see
+    // Common::Geometry::MeshParameters::apply_variations()).
+    const auto to_contact = [&geometry](const Point<3> &p) {
+      return contact_distance(geometry, p);
+    };
+    Common::Geometry::refine_planned<3>(
       tria,
       options.n_global_refinements,
       "Mesh: 'Number of global refinements', 'Number of sheet layers' and "
-      "'Number of pin layers'");
-    Common::Geometry::refine_toward<3>(
-      tria,
-      [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
-      options.n_contact_refinements,
-      options.grading_factor,
-      "Mesh: 'Number of global refinements', 'Number of sheet layers', "
-      "'Number of pin layers', 'Number of contact refinements' and "
-      "'Grading factor'");
-    Common::Geometry::refine_toward<3>(
-      tria,
-      [&geometry, &options](const Point<3> &p) {
-        return arc_end_distance(geometry, options.arc_end_angle, p);
-      },
-      options.n_arc_end_refinements,
-      options.grading_factor,
-      "Mesh: 'Number of global refinements', 'Number of sheet layers', "
-      "'Number of pin layers', 'Number of contact refinements', 'Number of "
-      "arc end refinements' and 'Grading factor'");
-    // The variations of the common mesh entries (see
-    // Common::Geometry::MeshParameters::apply_variations()).
-    Common::Geometry::refine_toward<3>(
-      tria,
-      [&geometry](const Point<3> &p) { return contact_distance(geometry, p); },
-      std::abs(options.size_ratio_exponent),
-      options.grading_factor,
-      "Mesh: 'Contact size ratio' with the other refinement entries",
-      options.size_ratio_exponent > 0 ? MaterialIds::sheet : MaterialIds::pin);
+      "'Number of pin layers'",
+      {{to_contact,
+        options.n_contact_refinements,
+        options.grading_factor,
+        "Mesh: 'Number of global refinements', 'Number of sheet layers', "
+        "'Number of pin layers', 'Number of contact refinements' and "
+        "'Grading factor'"},
+       {[&geometry, &options](const Point<3> &p) {
+          return arc_end_distance(geometry, options.arc_end_angle, p);
+        },
+        options.n_arc_end_refinements,
+        options.grading_factor,
+        "Mesh: 'Number of global refinements', 'Number of sheet layers', "
+        "'Number of pin layers', 'Number of contact refinements', 'Number of "
+        "arc end refinements' and 'Grading factor'"},
+       {to_contact,
+        static_cast<unsigned int>(std::abs(options.size_ratio_exponent)),
+        options.grading_factor,
+        "Mesh: 'Contact size ratio' with the other refinement entries",
+        options.size_ratio_exponent > 0 ? MaterialIds::sheet :
+                                          MaterialIds::pin}});
     Common::Geometry::perturb_interior_vertices(
       tria,
       options.interior_perturbation,

@@ -232,10 +232,6 @@ namespace Punch3d
                                            triangulation);
       }
 
-    Common::Geometry::refine_global_checked(
-      triangulation,
-      parameters.mesh.n_global_refinements,
-      "Mesh: 'Number of global refinements'");
     // Graded toward the band under the punch, then toward the contact
     // edge, from the start of the fillet to half its radius beyond it.
     // The carrier cell of an analytic rigid punch is not refined.
@@ -256,23 +252,23 @@ namespace Punch3d
     const double edge_end   = sphere ?
                                 1.25 * half_space_reference().contact_radius() :
                                 b + 0.5 * geometry.fillet_radius;
-    Common::Geometry::refine_toward<dim>(
+    Common::Geometry::refine_planned<dim>(
       triangulation,
-      band(0., sphere ? edge_end : a),
-      parameters.mesh.n_contact_refinements,
-      parameters.mesh.grading_factor,
-      "Mesh: 'Number of global refinements', "
-      "'Number of contact refinements' "
-      "and 'Grading factor'");
-    Common::Geometry::refine_toward<dim>(
-      triangulation,
-      band(edge_start, edge_end),
-      parameters.mesh.n_edge_refinements,
-      parameters.mesh.grading_factor,
-      "Mesh: 'Number of global refinements', "
-      "'Number of contact refinements', "
-      "'Number of edge refinements' and "
-      "'Grading factor'");
+      parameters.mesh.n_global_refinements,
+      "Mesh: 'Number of global refinements'",
+      {{band(0., sphere ? edge_end : a),
+        parameters.mesh.n_contact_refinements,
+        parameters.mesh.grading_factor,
+        "Mesh: 'Number of global refinements', "
+        "'Number of contact refinements' "
+        "and 'Grading factor'"},
+       {band(edge_start, edge_end),
+        parameters.mesh.n_edge_refinements,
+        parameters.mesh.grading_factor,
+        "Mesh: 'Number of global refinements', "
+        "'Number of contact refinements', "
+        "'Number of edge refinements' and "
+        "'Grading factor'"}});
     parameters.mesh.apply_variations<dim>(triangulation,
                                           band(0., sphere ? edge_end : a),
                                           MaterialIds::punch,

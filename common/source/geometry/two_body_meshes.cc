@@ -114,13 +114,35 @@ namespace Common
 
 
 
+      /** Refuse @p n_times global refinements of @p tria that would make
+       * more than max_active_cells cells. */
+      template <int dim>
+      void
+      check_global_refinements(const Triangulation<dim> &tria,
+                               const unsigned int        n_times,
+                               const std::string        &entries)
+      {
+        // Each refinement multiplies the cells by 2^dim: the count is
+        // checked one refinement at a time, before it overflows.
+        std::uint64_t n_cells = tria.n_active_cells();
+        for (unsigned int i = 0; i < n_times; ++i)
+          {
+            n_cells *= (1u << dim);
+            check_mesh_size<dim>(n_cells, entries);
+          }
+      }
+
+
+
       /**
-       * Cells that n_passes - pass graded passes make of the part
-       * [lo, hi] of a cell with the straight-sided vertices @p v (the
-       * reference box [0, 1]^dim): 1 if the part is not flagged, else the
-       * sum over its 2^dim children. Ignores the refinements that keep one
-       * hanging node per face, so the count is a lower bound. Stops when
-       * it exceeds @p budget.
+       * Cells that n_passes - pass passes make of the part [lo, hi] of a
+       * cell with the straight-sided vertices @p v (the reference box
+       * [0, 1]^dim): the passes before @p n_uniform refine every part (global
+       * refinements), the others only the parts the grading flags. A part
+       * left unrefined counts 1, a refined one the sum over its 2^dim
+       * children. Ignores the refinements that keep one hanging node per
+       * face, so the count is a lower bound. Stops when it exceeds
+       * @p budget.
        */
       template <int dim>
       std::uint64_t
@@ -129,6 +151,7 @@ namespace Common
         const Point<dim>                                                   &lo,
         const Point<dim>                                                   &hi,
         const unsigned int                               pass,
+        const unsigned int                               n_uniform,
         const unsigned int                               n_passes,
         const double                                     factor,
         const std::function<double(const Point<dim> &)> &distance,
@@ -136,28 +159,32 @@ namespace Common
       {
         if (pass == n_passes)
           return 1;
-        const auto map = [&v](const Point<dim> &xi) {
-          Point<dim> x;
-          for (unsigned int i = 0; i < v.size(); ++i)
-            x += GeometryInfo<dim>::d_linear_shape_function(xi, i) * v[i];
-          return x;
-        };
-        // The diameter as deal.II's: the longest diagonal.
-        double diameter = 0.;
-        for (unsigned int c = 0; c < (1u << (dim - 1)); ++c)
-          {
-            Point<dim> corner, opposite;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const bool upper = d < dim - 1 && (c >> d) & 1u;
-                corner[d]        = upper ? hi[d] : lo[d];
-                opposite[d]      = upper ? lo[d] : hi[d];
-              }
-            diameter = std::max(diameter, map(corner).distance(map(opposite)));
-          }
         const Point<dim> middle = 0.5 * (lo + hi);
-        if (!(distance(map(middle)) < factor * diameter))
-          return 1;
+        if (pass >= n_uniform)
+          {
+            const auto map = [&v](const Point<dim> &xi) {
+              Point<dim> x;
+              for (unsigned int i = 0; i < v.size(); ++i)
+                x += GeometryInfo<dim>::d_linear_shape_function(xi, i) * v[i];
+              return x;
+            };
+            // The diameter as deal.II's: the longest diagonal.
+            double diameter = 0.;
+            for (unsigned int c = 0; c < (1u << (dim - 1)); ++c)
+              {
+                Point<dim> corner, opposite;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const bool upper = d < dim - 1 && (c >> d) & 1u;
+                    corner[d]        = upper ? hi[d] : lo[d];
+                    opposite[d]      = upper ? lo[d] : hi[d];
+                  }
+                diameter =
+                  std::max(diameter, map(corner).distance(map(opposite)));
+              }
+            if (!(distance(map(middle)) < factor * diameter))
+              return 1;
+          }
         std::uint64_t n = 0;
         for (unsigned int child = 0; child < (1u << dim) && n <= budget;
              ++child)
@@ -173,12 +200,59 @@ namespace Common
                                  child_lo,
                                  child_hi,
                                  pass + 1,
+                                 n_uniform,
                                  n_passes,
                                  factor,
                                  distance,
                                  budget - n);
           }
         return n;
+      }
+
+
+
+      /**
+       * Cells that @p n_uniform global refinements and then @p n_passes
+       * graded passes would make of @p tria (refine_toward()), predicted on
+       * its straight-sided cells: a lower bound, exceeding max_active_cells
+       * by at most one cell's share when it stops there.
+       */
+      template <int dim>
+      std::uint64_t
+      predicted_mesh_size(
+        const Triangulation<dim>                        &tria,
+        const std::function<double(const Point<dim> &)> &distance,
+        const unsigned int                               n_uniform,
+        const unsigned int                               n_passes,
+        const double                                     factor,
+        const types::material_id                         material_id)
+      {
+        std::uint64_t predicted = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            // A cell of another body takes the global refinements only.
+            const bool graded = material_id == numbers::invalid_material_id ||
+                                cell->material_id() == material_id;
+            std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> v;
+            for (const unsigned int i : cell->vertex_indices())
+              v[i] = cell->vertex(i);
+            Point<dim> lo, hi;
+            for (unsigned int d = 0; d < dim; ++d)
+              hi[d] = 1.;
+            predicted +=
+              predicted_cells<dim>(v,
+                                   lo,
+                                   hi,
+                                   0,
+                                   n_uniform,
+                                   n_uniform + (graded ? n_passes : 0),
+                                   factor,
+                                   distance,
+                                   max_active_cells<dim> - predicted);
+            if (predicted > max_active_cells<dim>)
+              break;
+          }
+        return predicted;
       }
     } // namespace
 
@@ -203,14 +277,7 @@ namespace Common
                           const unsigned int  n_times,
                           const std::string  &entries)
     {
-      // Each refinement multiplies the cells by 2^dim: the count is
-      // checked one refinement at a time, before it overflows.
-      std::uint64_t n_cells = tria.n_active_cells();
-      for (unsigned int i = 0; i < n_times; ++i)
-        {
-          n_cells *= (1u << dim);
-          check_mesh_size<dim>(n_cells, entries);
-        }
+      check_global_refinements(tria, n_times, entries);
       tria.refine_global(n_times);
     }
 
@@ -229,33 +296,9 @@ namespace Common
       // smoothing refinements (a lower bound): a pass that refines nearly
       // every cell is refused before it runs, not after it made a mesh
       // just under the limit.
-      std::uint64_t predicted = 0;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          if (material_id != numbers::invalid_material_id &&
-              cell->material_id() != material_id)
-            {
-              ++predicted;
-              continue;
-            }
-          std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell> v;
-          for (const unsigned int i : cell->vertex_indices())
-            v[i] = cell->vertex(i);
-          Point<dim> lo, hi;
-          for (unsigned int d = 0; d < dim; ++d)
-            hi[d] = 1.;
-          predicted += predicted_cells<dim>(v,
-                                            lo,
-                                            hi,
-                                            0,
-                                            n_passes,
-                                            factor,
-                                            distance,
-                                            max_active_cells<dim>);
-          if (predicted > max_active_cells<dim>)
-            break;
-        }
-      check_mesh_size<dim>(predicted, entries);
+      check_mesh_size<dim>(
+        predicted_mesh_size(tria, distance, 0, n_passes, factor, material_id),
+        entries);
 
       for (unsigned int pass = 0; pass < n_passes; ++pass)
         {
@@ -275,6 +318,38 @@ namespace Common
                                entries);
           tria.execute_coarsening_and_refinement();
         }
+    }
+
+
+
+    template <int dim>
+    void
+    refine_planned(Triangulation<dim>                       &tria,
+                   const unsigned int                        n_global,
+                   const std::string                        &global_entries,
+                   const std::vector<GradedRefinement<dim>> &graded)
+    {
+      // Each set refines the mesh the sets before it left, which refines
+      // the globally refined coarse mesh: what the set alone would make
+      // of that mesh is a lower bound of the final mesh, predicted before
+      // the global refinements run.
+      check_global_refinements(tria, n_global, global_entries);
+      for (const GradedRefinement<dim> &set : graded)
+        check_mesh_size<dim>(predicted_mesh_size(tria,
+                                                 set.distance,
+                                                 n_global,
+                                                 set.n_passes,
+                                                 set.factor,
+                                                 set.material_id),
+                             set.entries);
+      tria.refine_global(n_global);
+      for (const GradedRefinement<dim> &set : graded)
+        refine_toward(tria,
+                      set.distance,
+                      set.n_passes,
+                      set.factor,
+                      set.entries,
+                      set.material_id);
     }
 
 
@@ -463,6 +538,11 @@ namespace Common
                   const std::string &,
                   const types::material_id);
     template void
+    refine_planned(Triangulation<2> &,
+                   const unsigned int,
+                   const std::string &,
+                   const std::vector<GradedRefinement<2>> &);
+    template void
     perturb_interior_vertices(Triangulation<2> &,
                               const double,
                               const std::string &);
@@ -477,6 +557,11 @@ namespace Common
                   const double,
                   const std::string &,
                   const types::material_id);
+    template void
+    refine_planned(Triangulation<3> &,
+                   const unsigned int,
+                   const std::string &,
+                   const std::vector<GradedRefinement<3>> &);
     template void
     perturb_interior_vertices(Triangulation<3> &,
                               const double,

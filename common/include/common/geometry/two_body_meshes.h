@@ -104,6 +104,48 @@ namespace Common
         dealii::numbers::invalid_material_id);
 
     /**
+     * @brief One set of graded passes of refine_planned(): the arguments
+     * of refine_toward().
+     */
+    template <int dim>
+    struct GradedRefinement
+    {
+      /** Distance of a point to the region (mm). */
+      std::function<double(const dealii::Point<dim> &)> distance;
+      /** Number of passes. */
+      unsigned int n_passes;
+      /** A cell is refined if its centre lies closer to the region than
+       * factor times its diameter (dimensionless). */
+      double factor;
+      /** The parameter entries that set the refinement, as the error
+       * message names them. */
+      std::string entries;
+      /** Refine only the cells of this body (all cells if invalid). */
+      dealii::types::material_id material_id =
+        dealii::numbers::invalid_material_id;
+    };
+
+    /**
+     * @brief Refine @p tria globally @p n_global times, then by each set of
+     * graded passes of @p graded in turn (refine_toward()). Before any
+     * refinement runs, the mesh that the global refinements and each set
+     * alone would make of the coarse mesh is predicted: the later sets
+     * refine a finer mesh, so this is a lower bound of the final mesh, and
+     * a plan beyond max_active_cells is refused at once, not after global
+     * refinements that may take minutes.
+     * @param[in] global_entries The parameter entries that set
+     * @p n_global, as the error message names them.
+     * @throws dealii::ExcMessage naming the entries of the first set (or
+     * @p global_entries) that would make the mesh too large.
+     */
+    template <int dim>
+    void
+    refine_planned(dealii::Triangulation<dim>               &tria,
+                   const unsigned int                        n_global,
+                   const std::string                        &global_entries,
+                   const std::vector<GradedRefinement<dim>> &graded);
+
+    /**
      * @brief Move every vertex that lies on no boundary in a random
      * direction by up to @p fraction of the shortest active edge at it,
      * for tests of robustness to distorted cells. The random numbers come
