@@ -273,18 +273,6 @@ namespace Common
 
     template <int dim>
     void
-    refine_global_checked(Triangulation<dim> &tria,
-                          const unsigned int  n_times,
-                          const std::string  &entries)
-    {
-      check_global_refinements(tria, n_times, entries);
-      tria.refine_global(n_times);
-    }
-
-
-
-    template <int dim>
-    void
     refine_toward(Triangulation<dim>                              &tria,
                   const std::function<double(const Point<dim> &)> &distance,
                   const unsigned int                               n_passes,
@@ -527,10 +515,6 @@ namespace Common
     join_bodies(const std::vector<const Triangulation<3> *> &,
                 Triangulation<3> &);
     template void
-    refine_global_checked(Triangulation<2> &,
-                          const unsigned int,
-                          const std::string &);
-    template void
     refine_toward(Triangulation<2> &,
                   const std::function<double(const Point<2> &)> &,
                   const unsigned int,
@@ -546,10 +530,6 @@ namespace Common
     perturb_interior_vertices(Triangulation<2> &,
                               const double,
                               const std::string &);
-    template void
-    refine_global_checked(Triangulation<3> &,
-                          const unsigned int,
-                          const std::string &);
     template void
     refine_toward(Triangulation<3> &,
                   const std::function<double(const Point<3> &)> &,

@@ -41,7 +41,7 @@ namespace Common
      * @brief Largest number of active cells a mesh of the suite may have:
      * 1 million in 2D, half a million in 3D, beyond what a workstation
      * solves with a direct solver. Refinements that would exceed it are refused
-     * before they run (refine_global_checked(), refine_toward()).
+     * before they run (refine_planned(), refine_toward()).
      */
     template <int dim>
     constexpr std::uint64_t max_active_cells = dim == 2 ? 1'000'000 : 500'000;
@@ -59,21 +59,6 @@ namespace Common
     check_cell_count(const std::uint64_t n_cells,
                      const std::uint64_t max_cells,
                      const std::string  &entries);
-
-    /**
-     * @brief Refine @p tria globally @p n_times, refusing a mesh of more
-     * than max_active_cells cells before refining.
-     * @param[in] entries The parameter entries that set the refinement, as
-     * the error message names them (e.g. "'Number of global refinements'
-     * in subsection Mesh").
-     * @throws dealii::ExcMessage naming @p entries if the mesh would be
-     * too large.
-     */
-    template <int dim>
-    void
-    refine_global_checked(dealii::Triangulation<dim> &tria,
-                          const unsigned int          n_times,
-                          const std::string          &entries);
 
     /**
      * @brief Graded refinement toward a region: in each of @p n_passes
